@@ -1,0 +1,126 @@
+//! What can go wrong, and where.
+
+use core::fmt;
+
+/// Why a triangulation was refused.
+///
+/// Every variant but [`Error::Internal`] describes bad input and says where it is: input
+/// vertex indices (into the `vertices` slice) and ring numbers (positions in `ring_starts`).
+/// [`Error::Internal`] is a bug in polytri, never the caller's fault.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum Error {
+    /// A coordinate is NaN or infinite.
+    NonFinite {
+        /// Index of the offending vertex.
+        vertex: usize,
+    },
+    /// `ring_starts` is empty while there are vertices, or its first entry is not 0.
+    FirstRingStart {
+        /// The first entry, or `None` when `ring_starts` is empty.
+        start: Option<usize>,
+    },
+    /// A ring start is not greater than the one before it.
+    RingStartsNotIncreasing {
+        /// The ring whose start is out of order.
+        ring: usize,
+        /// Its start.
+        start: usize,
+        /// The start of the ring before it.
+        previous: usize,
+    },
+    /// A ring start lies beyond the end of `vertices`.
+    RingStartOutOfRange {
+        /// The ring whose start is out of range.
+        ring: usize,
+        /// Its start.
+        start: usize,
+        /// The number of vertices.
+        len: usize,
+    },
+    /// More vertices than `u32` triangle indices can address.
+    TooManyVertices {
+        /// The number of vertices given.
+        count: usize,
+    },
+    /// Two edges cross (strict mode only). Each edge is named by the input vertex it starts
+    /// at and its ring; the edge runs to the next kept vertex of that ring.
+    EdgesCross {
+        /// Ring of the first edge.
+        ring_a: usize,
+        /// Start vertex of the first edge.
+        edge_a: usize,
+        /// Ring of the second edge.
+        ring_b: usize,
+        /// Start vertex of the second edge.
+        edge_b: usize,
+    },
+    /// Two edges overlap along a segment without sharing both endpoints (strict mode only).
+    EdgesOverlap {
+        /// Ring of the first edge.
+        ring_a: usize,
+        /// Start vertex of the first edge.
+        edge_a: usize,
+        /// Ring of the second edge.
+        ring_b: usize,
+        /// Start vertex of the second edge.
+        edge_b: usize,
+    },
+    /// With [`Nesting::FirstIsOuter`](crate::Nesting::FirstIsOuter): a hole is not inside the
+    /// outer ring, or lies inside another hole (strict mode only).
+    HoleOutside {
+        /// The misplaced hole.
+        ring: usize,
+    },
+    /// polytri failed where it should not have: **this is a bug, please report it** with the
+    /// input at <https://github.com/polytri/polytri/issues>.
+    Internal {
+        /// The pipeline stage that gave up.
+        stage: &'static str,
+    },
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            Error::NonFinite { vertex } => {
+                write!(f, "vertex {vertex} has a coordinate that is NaN or infinite")
+            }
+            Error::FirstRingStart { start: None } => {
+                write!(f, "ring_starts is empty but there are vertices; it must start with 0")
+            }
+            Error::FirstRingStart { start: Some(s) } => {
+                write!(f, "ring_starts must start with 0, not {s}")
+            }
+            Error::RingStartsNotIncreasing { ring, start, previous } => write!(
+                f,
+                "ring {ring} starts at vertex {start}, not after ring {}'s start {previous}",
+                ring.saturating_sub(1)
+            ),
+            Error::RingStartOutOfRange { ring, start, len } => {
+                write!(f, "ring {ring} starts at vertex {start} but there are only {len} vertices")
+            }
+            Error::TooManyVertices { count } => {
+                write!(f, "{count} vertices are more than u32 triangle indices can address")
+            }
+            Error::EdgesCross { ring_a, edge_a, ring_b, edge_b } => write!(
+                f,
+                "edges cross: ring {ring_a} edge from vertex {edge_a} and ring {ring_b} edge from vertex {edge_b}"
+            ),
+            Error::EdgesOverlap { ring_a, edge_a, ring_b, edge_b } => write!(
+                f,
+                "edges overlap: ring {ring_a} edge from vertex {edge_a} and ring {ring_b} edge from vertex {edge_b}"
+            ),
+            Error::HoleOutside { ring } => write!(
+                f,
+                "ring {ring} is given as a hole but is not inside the outer ring (or lies in another hole)"
+            ),
+            Error::Internal { stage } => write!(
+                f,
+                "internal error in stage `{stage}`: this is a bug in polytri, please report it with the input"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for Error {}

@@ -1,0 +1,228 @@
+//! The node pool: every ring's vertices in one `Vec<Node>`, each ring a circular doubly
+//! linked list by index. No pointers, no `unsafe`; removal only relinks.
+
+use crate::predicates::Point;
+
+/// Index of a node in the pool.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub(crate) struct NodeId(pub u32);
+
+impl NodeId {
+    #[inline]
+    pub const fn idx(self) -> usize {
+        self.0 as usize
+    }
+}
+
+/// One vertex occurrence. Bridging copies nodes, so one input vertex may have several.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Node {
+    /// Position, widened to f64.
+    pub p: Point,
+    /// Index of the input vertex it stands for.
+    pub vertex: u32,
+    /// The ring (index into the triangulator's ring table) it was loaded into.
+    pub ring: u32,
+    pub prev: NodeId,
+    pub next: NodeId,
+    /// Unlinked from its ring.
+    pub removed: bool,
+    /// Clipping: failed the ear test, skip until a neighbour changes (paper §3.3).
+    pub not_ear: bool,
+    /// Bumped whenever the node's ear status may have changed (quality strategy's queue).
+    pub stamp: u32,
+}
+
+/// The pool: nodes plus list operations.
+#[derive(Debug, Default)]
+pub(crate) struct Pool {
+    pub nodes: Vec<Node>,
+}
+
+impl Pool {
+    pub fn clear(&mut self) {
+        self.nodes.clear();
+    }
+
+    #[inline]
+    pub fn len(&self) -> usize {
+        self.nodes.len()
+    }
+
+    #[inline]
+    pub fn get(&self, n: NodeId) -> &Node {
+        &self.nodes[n.idx()]
+    }
+
+    #[inline]
+    pub fn get_mut(&mut self, n: NodeId) -> &mut Node {
+        &mut self.nodes[n.idx()]
+    }
+
+    #[inline]
+    pub fn p(&self, n: NodeId) -> Point {
+        self.nodes[n.idx()].p
+    }
+
+    #[inline]
+    pub fn next(&self, n: NodeId) -> NodeId {
+        self.nodes[n.idx()].next
+    }
+
+    #[inline]
+    pub fn prev(&self, n: NodeId) -> NodeId {
+        self.nodes[n.idx()].prev
+    }
+
+    /// Appends an unlinked node (its own ring of one) and returns its id.
+    pub fn push(&mut self, p: Point, vertex: u32, ring: u32) -> NodeId {
+        let id = NodeId(self.nodes.len() as u32);
+        self.nodes.push(Node {
+            p,
+            vertex,
+            ring,
+            prev: id,
+            next: id,
+            removed: false,
+            not_ear: false,
+            stamp: 0,
+        });
+        id
+    }
+
+    /// Links the nodes `first..first+count` (in pool order) into one circular list.
+    pub fn link_run(&mut self, first: u32, count: u32) {
+        for k in 0..count {
+            let n = &mut self.nodes[(first + k) as usize];
+            n.next = NodeId(first + (k + 1) % count);
+            n.prev = NodeId(first + (k + count - 1) % count);
+        }
+    }
+
+    /// Unlinks `n` from its ring; its neighbours become adjacent and may be ears again.
+    pub fn remove(&mut self, n: NodeId) {
+        let (prev, next) = (self.prev(n), self.next(n));
+        self.get_mut(prev).next = next;
+        self.get_mut(next).prev = prev;
+        self.touch(prev);
+        self.touch(next);
+        self.get_mut(n).removed = true;
+    }
+
+    /// Marks a node's ear status as unknown (a neighbour changed).
+    #[inline]
+    pub fn touch(&mut self, n: NodeId) {
+        let node = self.get_mut(n);
+        node.not_ear = false;
+        node.stamp = node.stamp.wrapping_add(1);
+    }
+
+    /// Inserts a copy of `n` (same position and vertex) right after `after`.
+    fn copy_after(&mut self, n: NodeId, after: NodeId) -> NodeId {
+        let node = *self.get(n);
+        let id = self.push(node.p, node.vertex, node.ring);
+        let next = self.next(after);
+        let c = self.get_mut(id);
+        c.prev = after;
+        c.next = next;
+        self.get_mut(after).next = id;
+        self.get_mut(next).prev = id;
+        id
+    }
+
+    /// Connects `a` and `b` by a diagonal, splitting their ring in two — or, when `a` and
+    /// `b` are on different rings, merging them into one through a two-way bridge.
+    /// Returns the copy of `b` that now ends the second ring (earcut's `splitPolygon`).
+    ///
+    /// Before: `… ap → a → an …` and `… bp → b → bn …`.
+    /// After:  `… ap → a → b → bn …` and `… bp → b2 → a2 → an …`.
+    pub fn split(&mut self, a: NodeId, b: NodeId) -> NodeId {
+        let an = self.next(a);
+        let bp = self.prev(b);
+        let a2 = self.copy_after(a, a); // a → a2 → an
+        let b2 = self.copy_after(b, bp); // bp → b2 → b
+        // a → b, b2 → a2
+        self.get_mut(a).next = b;
+        self.get_mut(b).prev = a;
+        self.get_mut(b2).next = a2;
+        self.get_mut(a2).prev = b2;
+        self.get_mut(a2).next = an;
+        self.get_mut(an).prev = a2;
+        for n in [a, b, a2, b2] {
+            self.touch(n);
+        }
+        b2
+    }
+
+    /// Reverses the direction of the ring through `start`.
+    pub fn reverse(&mut self, start: NodeId) {
+        let mut n = start;
+        loop {
+            let node = self.get_mut(n);
+            core::mem::swap(&mut node.prev, &mut node.next);
+            n = node.prev; // the old next
+            if n == start {
+                break;
+            }
+        }
+    }
+
+    /// Iterates the ring through `start`, beginning there.
+    pub fn ring(&self, start: NodeId) -> RingIter<'_> {
+        RingIter { pool: self, start, cur: Some(start) }
+    }
+}
+
+/// Iterator over a ring's node ids.
+pub(crate) struct RingIter<'a> {
+    pool: &'a Pool,
+    start: NodeId,
+    cur: Option<NodeId>,
+}
+
+impl Iterator for RingIter<'_> {
+    type Item = NodeId;
+    fn next(&mut self) -> Option<NodeId> {
+        let cur = self.cur?;
+        let next = self.pool.next(cur);
+        self.cur = if next == self.start { None } else { Some(next) };
+        Some(cur)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn square(pool: &mut Pool) -> NodeId {
+        for (i, (x, y)) in [(0., 0.), (1., 0.), (1., 1.), (0., 1.)].into_iter().enumerate() {
+            pool.push(Point::new(x, y), i as u32, 0);
+        }
+        pool.link_run(0, 4);
+        NodeId(0)
+    }
+
+    fn vertices(pool: &Pool, start: NodeId) -> Vec<u32> {
+        pool.ring(start).map(|n| pool.get(n).vertex).collect()
+    }
+
+    #[test]
+    fn link_remove_reverse() {
+        let mut pool = Pool::default();
+        let s = square(&mut pool);
+        assert_eq!(vertices(&pool, s), [0, 1, 2, 3]);
+        pool.remove(NodeId(2));
+        assert_eq!(vertices(&pool, s), [0, 1, 3]);
+        pool.reverse(s);
+        assert_eq!(vertices(&pool, s), [0, 3, 1]);
+    }
+
+    #[test]
+    fn split_makes_two_rings() {
+        let mut pool = Pool::default();
+        let s = square(&mut pool);
+        let b2 = pool.split(NodeId(0), NodeId(2));
+        assert_eq!(vertices(&pool, s), [0, 2, 3]);
+        assert_eq!(vertices(&pool, b2), [2, 0, 1]);
+    }
+}

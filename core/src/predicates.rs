@@ -1,0 +1,170 @@
+//! The one module of geometric predicates. Nobody else computes a determinant.
+//!
+//! Every decision that affects validity (convex or reflex, inside or outside, which side of an
+//! edge, which of two ray hits is nearer) is an [`orient2d`] sign, computed exactly with
+//! Shewchuk's adaptive arithmetic from the `robust` crate: a fast floating-point filter first,
+//! an exact fallback only when the filter cannot decide.
+//!
+//! Both precisions share this path: an `f32` input is widened to `f64` when it is loaded,
+//! which is exact, so the sign computed here is the exact sign for the `f32` coordinates too.
+//! (Evaluating the `f32` determinant in plain `f64` is *not* always exact: differences of
+//! `f32` values with far-apart exponents need more than 53 bits. The adaptive predicate is.)
+
+/// A point as the pipeline sees it: input coordinates widened to `f64` (exactly).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Point {
+    pub x: f64,
+    pub y: f64,
+}
+
+impl Point {
+    pub const fn new(x: f64, y: f64) -> Self {
+        Point { x, y }
+    }
+}
+
+/// The sign of the turn a → b → c.
+///
+/// **`CounterClockwise` means c lies to the left of the directed line a → b** (y up).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Orientation {
+    /// c is strictly left of a → b: the turn a → b → c is counter-clockwise.
+    CounterClockwise,
+    /// c is strictly right of a → b: the turn a → b → c is clockwise.
+    Clockwise,
+    /// a, b and c lie on one line (or two of them coincide).
+    Collinear,
+}
+
+impl Orientation {
+    /// The orientation seen with the order of the points reversed.
+    pub const fn reversed(self) -> Self {
+        match self {
+            Orientation::CounterClockwise => Orientation::Clockwise,
+            Orientation::Clockwise => Orientation::CounterClockwise,
+            Orientation::Collinear => Orientation::Collinear,
+        }
+    }
+}
+
+/// Exact orientation of the triangle a, b, c.
+#[inline]
+pub(crate) fn orient2d(a: Point, b: Point, c: Point) -> Orientation {
+    let det = robust::orient2d(
+        robust::Coord { x: a.x, y: a.y },
+        robust::Coord { x: b.x, y: b.y },
+        robust::Coord { x: c.x, y: c.y },
+    );
+    if det > 0.0 {
+        Orientation::CounterClockwise
+    } else if det < 0.0 {
+        Orientation::Clockwise
+    } else {
+        Orientation::Collinear
+    }
+}
+
+/// True when c lies strictly left of a → b.
+#[inline]
+pub(crate) fn left_of(a: Point, b: Point, c: Point) -> bool {
+    orient2d(a, b, c) == Orientation::CounterClockwise
+}
+
+/// True when p lies on the closed segment a–b (exact).
+#[inline]
+pub(crate) fn on_segment(a: Point, b: Point, p: Point) -> bool {
+    orient2d(a, b, p) == Orientation::Collinear && within_box(a, b, p)
+}
+
+/// True when p lies in the axis-aligned box spanned by a and b (comparisons only, exact).
+#[inline]
+pub(crate) fn within_box(a: Point, b: Point, p: Point) -> bool {
+    p.x >= a.x.min(b.x) && p.x <= a.x.max(b.x) && p.y >= a.y.min(b.y) && p.y <= a.y.max(b.y)
+}
+
+/// Lexicographic order of points: by x, then by y. Exact.
+#[inline]
+pub(crate) fn cmp_xy(a: Point, b: Point) -> core::cmp::Ordering {
+    a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y))
+}
+
+/// An estimate of the interior angle at b (in radians, 0..2π) of the turn a → b → c for a
+/// counter-clockwise polygon. **Not exact**: it only ranks ears for the quality strategy and
+/// never decides validity.
+#[inline]
+pub(crate) fn approx_interior_angle(a: Point, b: Point, c: Point) -> f64 {
+    let (ux, uy) = (a.x - b.x, a.y - b.y);
+    let (vx, vy) = (c.x - b.x, c.y - b.y);
+    // angle swept counter-clockwise from b→c to b→a
+    let cross = vx * uy - vy * ux;
+    let dot = vx * ux + vy * uy;
+    let angle = cross.atan2(dot);
+    if angle < 0.0 {
+        angle + core::f64::consts::TAU
+    } else {
+        angle
+    }
+}
+
+/// Twice the signed area of the triangle a, b, c in floating point. **Not exact**: used only
+/// for reports and tie-free heuristics, never for a decision.
+#[inline]
+pub(crate) fn approx_double_area(a: Point, b: Point, c: Point) -> f64 {
+    (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn p(x: f64, y: f64) -> Point {
+        Point::new(x, y)
+    }
+
+    #[test]
+    fn orientation_signs() {
+        assert_eq!(orient2d(p(0., 0.), p(1., 0.), p(0., 1.)), Orientation::CounterClockwise);
+        assert_eq!(orient2d(p(0., 0.), p(0., 1.), p(1., 0.)), Orientation::Clockwise);
+        assert_eq!(orient2d(p(0., 0.), p(1., 1.), p(2., 2.)), Orientation::Collinear);
+    }
+
+    #[test]
+    fn exact_where_naive_floating_point_fails() {
+        // Classic near-collinear configuration: the naive determinant gets the sign wrong
+        // for some of these offsets; the exact predicate must say collinear for the points
+        // that are exactly on the line y = x and never flip for the others.
+        let a = p(12.0, 12.0);
+        let b = p(24.0, 24.0);
+        for i in 0..256 {
+            let x = 0.5 + f64::EPSILON * i as f64;
+            let c = p(x, x);
+            assert_eq!(orient2d(a, b, c), Orientation::Collinear);
+            let above = p(x, f64::from_bits(x.to_bits() + 1));
+            assert_eq!(orient2d(a, b, above), Orientation::CounterClockwise);
+        }
+    }
+
+    #[test]
+    fn f32_inputs_widened_are_exact() {
+        // f32 points far apart in exponent: the naive f64 determinant loses bits here.
+        let a = p(1.0e30_f32 as f64, 1.0e-30_f32 as f64);
+        let b = p(-(1.0e30_f32 as f64), -(1.0e-30_f32 as f64));
+        let c = p(0.0, 0.0);
+        assert_eq!(orient2d(a, b, c), Orientation::Collinear);
+    }
+
+    #[test]
+    fn reversed_flips() {
+        let o = orient2d(p(0., 0.), p(1., 0.), p(0., 1.));
+        assert_eq!(o.reversed(), orient2d(p(0., 0.), p(0., 1.), p(1., 0.)));
+    }
+
+    #[test]
+    fn angle_estimate() {
+        let a = approx_interior_angle(p(0., 1.), p(0., 0.), p(1., 0.));
+        // for a CCW polygon ... → (0,1) → (0,0) → (1,0): a left turn, interior angle 90°
+        assert!((a - core::f64::consts::FRAC_PI_2).abs() < 1e-12, "{a}");
+        let r = approx_interior_angle(p(1., 0.), p(0., 0.), p(0., 1.));
+        assert!((r - 1.5 * core::f64::consts::PI).abs() < 1e-12, "{r}");
+    }
+}

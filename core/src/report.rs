@@ -1,0 +1,82 @@
+//! What the triangulator left out, repaired or skipped.
+
+/// Why an input vertex is not used by any triangle.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum DropReason {
+    /// Same position as the vertex before it in its ring (this includes a repeated closing
+    /// point).
+    Repeated,
+    /// Lies on the straight line between its neighbours; the edge runs through it.
+    Collinear,
+    /// The tip of a zero-width spike: the ring runs out to it and straight back.
+    Spike,
+    /// Its ring has fewer than three distinct, non-collinear points and encloses no area.
+    DegenerateRing,
+    /// A coordinate is NaN or infinite (lenient mode; strict mode refuses the input).
+    NonFinite,
+    /// Its ring was skipped (lenient mode), see [`RepairKind`].
+    RingSkipped,
+}
+
+/// An input vertex that no triangle uses, and why.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Dropped {
+    /// Index into the input `vertices`.
+    pub vertex: u32,
+    /// The ring it belongs to (position in `ring_starts`).
+    pub ring: u32,
+    /// Why it was left out.
+    pub reason: DropReason,
+}
+
+/// What lenient mode changed to make a result.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum RepairKind {
+    /// Ring starts that were out of order or out of range were ignored.
+    RingStartIgnored,
+    /// Edges of the input cross; they were left as they are and the result may overlap or
+    /// leave gaps near them.
+    EdgesCross,
+    /// With `FirstIsOuter`, a hole lies outside the outer ring; it was still bridged in.
+    HoleOutside,
+    /// No proper ear was left (the input was not a valid polygon): a triangle was cut by
+    /// force to finish.
+    ForcedEar,
+    /// A piece of the polygon enclosing no area was dropped.
+    DegeneratePiece,
+}
+
+/// A repair made in lenient mode.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Repair {
+    /// What was done.
+    pub kind: RepairKind,
+    /// The ring concerned (position in `ring_starts`).
+    pub ring: u32,
+    /// The input vertex concerned, where one is meaningful.
+    pub vertex: u32,
+}
+
+/// The outcome of a successful triangulation, borrowed from the
+/// [`Triangulator`](crate::Triangulator) that made it.
+#[derive(Clone, Copy, Debug)]
+pub struct Report<'a> {
+    /// Number of triangles written.
+    pub triangles: usize,
+    /// Number of polygons (outer rings with their holes) triangulated.
+    pub polygons: usize,
+    /// Number of holes bridged into their polygons.
+    pub holes: usize,
+    /// Input vertices no triangle uses, and why.
+    pub dropped: &'a [Dropped],
+    /// What lenient mode repaired or skipped; always empty in strict mode.
+    pub repairs: &'a [Repair],
+}
+
+impl Report<'_> {
+    /// True when nothing was repaired: in strict mode always.
+    pub fn is_clean(&self) -> bool {
+        self.repairs.is_empty()
+    }
+}

@@ -1,0 +1,171 @@
+//! The reusable [`Triangulator`]: owns every buffer the pipeline needs, so a warmed-up
+//! triangulator allocates nothing on an input of the same size.
+
+use core::marker::PhantomData;
+
+use crate::grid::Bands;
+use crate::pool::{NodeId, Pool};
+use crate::report::{Dropped, Repair, RepairKind, Report};
+use crate::validate::SweepScratch;
+use crate::{bridge, clean, clip, load, nest, validate, Error, Options};
+
+/// A coordinate type the triangulator accepts: `f32` or `f64`.
+///
+/// Coordinates are widened to `f64` when loaded, which is exact, so every predicate gives
+/// the exact answer for the coordinates the caller gave.
+pub trait Coord: Copy + sealed::Sealed {
+    /// The value as `f64` (exact for both implementations).
+    fn to_f64(self) -> f64;
+}
+
+impl Coord for f64 {
+    #[inline]
+    fn to_f64(self) -> f64 {
+        self
+    }
+}
+
+impl Coord for f32 {
+    #[inline]
+    fn to_f64(self) -> f64 {
+        f64::from(self)
+    }
+}
+
+mod sealed {
+    pub trait Sealed {}
+    impl Sealed for f32 {}
+    impl Sealed for f64 {}
+}
+
+/// One ring after loading. Rings are indexed in load order, which is input order.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Ring {
+    /// Position in the caller's `ring_starts`.
+    pub input: u32,
+    /// A live node of the ring.
+    pub start: NodeId,
+    /// Live nodes in the ring.
+    pub len: u32,
+    /// Rightmost node (ties: lowest y); the paper's M for holes.
+    pub rightmost: NodeId,
+    /// Containment depth: even for outer boundaries, odd for holes.
+    pub depth: u32,
+    /// Still part of the input (not degenerate, not skipped).
+    pub alive: bool,
+    /// Part of an outer boundary's ring by now: an outer ring, or a hole bridged into one.
+    pub merged: bool,
+    /// The outer ring whose polygon this ring belongs to once bridged (itself for outers).
+    pub component: u32,
+}
+
+/// Everything the stages share: the node pool, the ring table, the report and scratch
+/// buffers. Stages are functions over this context.
+#[derive(Debug, Default)]
+pub(crate) struct Context {
+    pub pool: Pool,
+    pub rings: Vec<Ring>,
+    pub dropped: Vec<Dropped>,
+    pub repairs: Vec<Repair>,
+    pub lenient: bool,
+    /// Scratch: ring order for bridging, ring start nodes for the sweep.
+    pub order: Vec<u32>,
+    pub starts: Vec<NodeId>,
+    pub touches: Vec<validate::Touch>,
+    pub crossings: Vec<validate::Crossing>,
+    pub sweep: SweepScratch,
+    pub bands: Bands,
+    pub clip: clip::ClipScratch,
+}
+
+impl Context {
+    fn reset(&mut self, lenient: bool) {
+        self.pool.clear();
+        self.rings.clear();
+        self.dropped.clear();
+        self.repairs.clear();
+        self.lenient = lenient;
+    }
+
+    /// Records a lenient-mode repair.
+    pub fn repair(&mut self, kind: RepairKind, ring: u32, vertex: u32) {
+        self.repairs.push(Repair { kind, ring, vertex });
+    }
+}
+
+/// Triangulates polygons with holes and islands; reuse it to avoid allocation.
+///
+/// `T` is the coordinate type, `f32` or `f64`.
+///
+/// ```
+/// # fn main() -> Result<(), polytri::Error> {
+/// let mut tri = polytri::Triangulator::<f32>::new();
+/// let opts = polytri::Options::default()
+///     .with_strategy(polytri::Strategy::Quality)
+///     .with_nesting(polytri::Nesting::FirstIsOuter)
+///     .with_lenient(true);
+/// let vertices = [[0.0f32, 0.0], [4.0, 0.0], [4.0, 3.0], [0.0, 3.0]];
+/// let mut out: Vec<[u32; 3]> = Vec::new();
+/// let report = tri.triangulate(&vertices, &[0], &opts, &mut out)?;
+/// assert_eq!(out.len(), 2);
+/// assert!(report.dropped.is_empty());
+/// # Ok(())
+/// # }
+/// ```
+#[derive(Debug)]
+pub struct Triangulator<T: Coord> {
+    cx: Context,
+    _coord: PhantomData<fn(T)>,
+}
+
+impl<T: Coord> Default for Triangulator<T> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl<T: Coord> Triangulator<T> {
+    /// A triangulator with empty buffers; they grow on first use and are kept.
+    pub fn new() -> Self {
+        Triangulator { cx: Context::default(), _coord: PhantomData }
+    }
+
+    /// Triangulates the rings given by `vertices` and `ring_starts`.
+    ///
+    /// `ring_starts[k]` is the index of ring `k`'s first vertex; the first entry is 0 and
+    /// each ring runs to the next start (the last to the end). A closing point equal to the
+    /// first is allowed. Winding order does not matter.
+    ///
+    /// `out` is cleared and filled with triangles: indices into `vertices`,
+    /// counter-clockwise with y up.
+    ///
+    /// # Errors
+    ///
+    /// Bad input is refused with an [`Error`] saying what and where: non-finite coordinates,
+    /// malformed `ring_starts`, too many vertices, and in strict mode (the default) crossing
+    /// edges or misplaced holes. With [`Options::with_lenient`] only `TooManyVertices` and
+    /// `Internal` remain; everything else is repaired and listed in the [`Report`].
+    pub fn triangulate(
+        &mut self,
+        vertices: &[[T; 2]],
+        ring_starts: &[usize],
+        options: &Options,
+        out: &mut Vec<[u32; 3]>,
+    ) -> Result<Report<'_>, Error> {
+        out.clear();
+        let cx = &mut self.cx;
+        cx.reset(options.lenient);
+        load::load(cx, vertices, ring_starts)?;
+        clean::clean(cx)?;
+        let holes = nest::nest(cx, options.nesting)?;
+        bridge::bridge(cx)?;
+        let polygons = clip::clip(cx, options.strategy, out)?;
+        Ok(Report {
+            triangles: out.len(),
+            polygons,
+            holes,
+            dropped: &cx.dropped,
+            repairs: &cx.repairs,
+        })
+    }
+}

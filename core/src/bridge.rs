@@ -1,4 +1,277 @@
-//! Stage 4, *bridge*.
+//! Stage 4, *bridge*: merge every hole into the ring around it through a two-way bridge
+//! between mutually visible vertices (Eberly's method, with the clarifications of
+//! Kotsarenko 2024 §3.2).
+//!
+//! Holes go by descending rightmost x (ties: lower y first). From a hole's rightmost vertex
+//! M a ray runs towards +x; the nearest edge it hits, among rings already merged, belongs
+//! to the polygon around the hole (everything left of M is still unmerged, everything
+//! merged and hit first is this polygon's boundary). Then:
+//!
+//! - the ray hits a vertex: that vertex is visible;
+//! - it hits an edge inside at I: P is the edge's endpoint with the larger x (ties: lower
+//!   y); any vertex inside the triangle M, I, P (or on segment MP) may block the view, and
+//!   the one at the smallest angle to the ray, then nearest, is visible instead.
+//! - it hits M itself (a ring touching the hole at M): a zero-length bridge.
+//!
+//! Where the chosen position has several nodes (earlier bridges, rings touching there), the
+//! node whose corner contains the direction to M is the one to connect (the paper's Fig. 6c:
+//! several edges at the hit vertex). A ray along two coincident bridge edges hits only the
+//! one that has M on its inner side (Fig. 6a/b): with every ring's interior on the left,
+//! only upward edges with M strictly left of them count.
+//!
+//! All decisions are exact orientation tests. The searches use the band index of `grid`, so
+//! a hole costs about one band, not the whole polygon.
+
+use core::cmp::Ordering;
+
+use crate::nest::{corner_contains, index_all_edges, skip_ring};
+use crate::pool::NodeId;
+use crate::predicates::{left_of, orient2d, Orientation, Point};
 use crate::triangulator::Context;
 use crate::Error;
-pub(crate) fn bridge(cx: &mut Context) -> Result<(), Error> { let _ = cx; Ok(()) }
+
+/// Merges every live hole (odd depth) into the ring around it.
+pub(crate) fn bridge(cx: &mut Context) -> Result<(), Error> {
+    cx.order.clear();
+    for r in 0..cx.rings.len() {
+        let ring = &mut cx.rings[r];
+        ring.merged = ring.alive && ring.depth % 2 == 0;
+        ring.component = r as u32;
+        if ring.alive && ring.depth % 2 == 1 {
+            cx.order.push(r as u32);
+        }
+    }
+    if cx.order.is_empty() {
+        return Ok(());
+    }
+    index_all_edges(cx);
+    let (pool, rings) = (&cx.pool, &cx.rings);
+    cx.order.sort_unstable_by(|&a, &b| {
+        let (pa, pb) = (pool.p(rings[a as usize].rightmost), pool.p(rings[b as usize].rightmost));
+        pb.x.total_cmp(&pa.x).then(pa.y.total_cmp(&pb.y)).then(a.cmp(&b))
+    });
+    for k in 0..cx.order.len() {
+        let hole = cx.order[k] as usize;
+        eliminate_hole(cx, hole)?;
+    }
+    Ok(())
+}
+
+/// Bridges one hole into the ring around it.
+fn eliminate_hole(cx: &mut Context, hole: usize) -> Result<(), Error> {
+    let m = cx.rings[hole].rightmost;
+    let target = match find_touching(cx, m) {
+        Some(x) => Target::Touching(x),
+        None => match find_bridge(cx, m) {
+            Some(x) => Target::Visible(x),
+            None if cx.lenient => {
+                skip_ring(cx, hole);
+                return Ok(());
+            }
+            None => return Err(Error::Internal { stage: "bridge" }),
+        },
+    };
+    let x = match target {
+        Target::Touching(x) | Target::Visible(x) => x,
+    };
+    let component = cx.rings[cx.pool.get(x).ring as usize].component;
+    let x2 = cx.pool.next(x); // becomes the copy's successor after the split
+    let m2 = cx.pool.split(x, m);
+    let x_copy = cx.pool.next(m2);
+    debug_assert_eq!(cx.pool.next(x_copy), x2);
+    if let Target::Touching(_) = target {
+        // zero-length bridge: x and m coincide, as do m2 and x_copy; both nodes of each pair
+        // carry the same vertex index (clean made it so), so dropping one loses nothing
+        cx.pool.remove(m);
+        cx.pool.remove(x_copy);
+        register(cx, x);
+        register(cx, m2);
+    } else {
+        register(cx, x);
+        register(cx, m2);
+        register(cx, x_copy);
+    }
+    let len = cx.rings[hole].len;
+    let ring = &mut cx.rings[hole];
+    ring.merged = true;
+    ring.component = component;
+    let outer = &mut cx.rings[component as usize];
+    outer.len += len + 2;
+    if let Target::Touching(_) = target {
+        outer.len -= 2;
+    }
+    Ok(())
+}
+
+/// How a hole connects.
+#[derive(Clone, Copy)]
+enum Target {
+    /// A merged node at M's own position.
+    Touching(NodeId),
+    /// A merged node visible from M.
+    Visible(NodeId),
+}
+
+/// Lists the current edge starting at `n` in the band index again.
+fn register(cx: &mut Context, n: NodeId) {
+    cx.bands.insert(n, cx.pool.p(n), cx.pool.p(cx.pool.next(n)));
+}
+
+/// Whether node `n` is on a ring that is merged already (and still linked).
+#[inline]
+fn is_merged(cx: &Context, n: NodeId) -> bool {
+    let node = cx.pool.get(n);
+    !node.removed && cx.rings[node.ring as usize].merged
+}
+
+/// A merged node at the hole vertex `m`'s own position whose corner holds the hole's corner
+/// there: the hole touches its polygon at M.
+fn find_touching(cx: &Context, m: NodeId) -> Option<NodeId> {
+    let pm = cx.pool.p(m);
+    let (mn, mp) = (cx.pool.p(cx.pool.next(m)), cx.pool.p(cx.pool.prev(m)));
+    cx.bands.query(pm.y, pm.y).find(|&x| {
+        if !is_merged(cx, x) || cx.pool.p(x) != pm {
+            return false;
+        }
+        let (xn, xp) = (cx.pool.p(cx.pool.next(x)), cx.pool.p(cx.pool.prev(x)));
+        corner_contains(pm, xn, xp, mn).or_else(|| corner_contains(pm, xn, xp, mp)) == Some(true)
+    })
+}
+
+/// The node M connects to, found by the ray cast and the triangle search; `None` when the
+/// ray hits nothing (the hole lies outside every polygon).
+fn find_bridge(cx: &Context, m: NodeId) -> Option<NodeId> {
+    let pm = cx.pool.p(m);
+    let (a, b) = nearest_hit(cx, pm)?;
+    let (pa, pb) = (cx.pool.p(a), cx.pool.p(b));
+    let component = cx.rings[cx.pool.get(a).ring as usize].component;
+    let target = if pa.y == pm.y {
+        pa
+    } else if pb.y == pm.y {
+        pb
+    } else {
+        // P: the endpoint with larger x; for a vertical edge the lower one, which for an
+        // upward edge is a
+        let p = if pb.x > pa.x { pb } else { pa };
+        least_angle_in_triangle(cx, pm, pa, pb, p, component)
+    };
+    visible_node_at(cx, target, pm, component)
+}
+
+/// The nearest edge a → b hit by the ray from `pm` towards +x: among merged rings' edges,
+/// upward ones (a.y <= M.y <= b.y, a.y < b.y) with M strictly on their left, i.e. seen
+/// from the polygon's interior.
+fn nearest_hit(cx: &Context, pm: Point) -> Option<(NodeId, NodeId)> {
+    let mut best: Option<(NodeId, NodeId)> = None;
+    for a in cx.bands.query(pm.y, pm.y) {
+        if !is_merged(cx, a) {
+            continue;
+        }
+        let b = cx.pool.next(a);
+        let (pa, pb) = (cx.pool.p(a), cx.pool.p(b));
+        if !(pa.y <= pm.y && pm.y <= pb.y && pa.y < pb.y && left_of(pa, pb, pm)) {
+            continue;
+        }
+        best = match best {
+            Some((c, d)) if compare_hits(pm.y, cx.pool.p(c), cx.pool.p(d), pa, pb) != Ordering::Less => {
+                Some((c, d))
+            }
+            _ => Some((a, b)),
+        };
+    }
+    best
+}
+
+/// Compares where two upward edges a → b and c → d, both spanning height `y`, meet the
+/// line at `y`: `Less` when c → d meets it further left (nearer), exactly.
+///
+/// A point left of an upward line has a smaller x at the same height. If c and d lie on
+/// one side of the line through a, b, so does the hit of c → d; otherwise, for
+/// non-crossing edges, a and b lie on one side of the line through c, d.
+fn compare_hits(y: f64, a: Point, b: Point, c: Point, d: Point) -> Ordering {
+    if let Some(ord) = side_of_line(y, a, b, c, d) {
+        return ord;
+    }
+    if let Some(ord) = side_of_line(y, c, d, a, b) {
+        return ord.reverse();
+    }
+    // the edges cross (lenient input only): no exact answer exists, estimate
+    let hit = |p: Point, q: Point| p.x + (y - p.y) / (q.y - p.y) * (q.x - p.x);
+    hit(c, d).total_cmp(&hit(a, b))
+}
+
+/// Where c → d meets height `y` relative to the line a → b there, when c and d are on one
+/// side of that line (or on it): `Less` left, `Greater` right, `Equal` on it.
+fn side_of_line(y: f64, a: Point, b: Point, c: Point, d: Point) -> Option<Ordering> {
+    let (oc, od) = (orient2d(a, b, c), orient2d(a, b, d));
+    use Orientation::*;
+    let ord = match (oc, od) {
+        (Collinear, Collinear) => return Some(Ordering::Equal),
+        (CounterClockwise, Clockwise) | (Clockwise, CounterClockwise) => return None,
+        (CounterClockwise, _) | (_, CounterClockwise) => Ordering::Less,
+        _ => Ordering::Greater,
+    };
+    // one endpoint on the line exactly at height y: that endpoint is the hit of both
+    if (oc == Collinear && c.y == y) || (od == Collinear && d.y == y) {
+        return Some(Ordering::Equal);
+    }
+    Some(ord)
+}
+
+/// Among the vertices of `component` inside triangle M, I, P (I: the hit on edge a → b) or
+/// on segment MP, the one at the smallest angle to the ray, then the nearest; P if none.
+fn least_angle_in_triangle(cx: &Context, pm: Point, pa: Point, pb: Point, p: Point, component: u32) -> Point {
+    let above = p.y > pm.y;
+    let (ylo, yhi) = if above { (pm.y, p.y) } else { (p.y, pm.y) };
+    // Sides of the triangle: the ray's line (exclusive), the edge's line (exclusive: M's
+    // side), and segment MP (inclusive: a vertex on it blocks the bridge).
+    let outside_mp = if above { Orientation::CounterClockwise } else { Orientation::Clockwise };
+    let mut best = p;
+    for r in cx.bands.query(ylo, yhi) {
+        let node = cx.pool.get(r);
+        if node.removed || cx.rings[node.ring as usize].component != component {
+            continue;
+        }
+        let q = node.p;
+        let strictly_beside_ray = if above { q.y > pm.y } else { q.y < pm.y };
+        if !strictly_beside_ray || q.y < ylo || q.y > yhi || q.x < pm.x || q == p {
+            continue;
+        }
+        if !left_of(pa, pb, q) || orient2d(pm, p, q) == outside_mp {
+            continue;
+        }
+        // smaller angle to the ray: clockwise of the best seen from M when above, else
+        // counter-clockwise; the same angle: nearer
+        let turn = orient2d(pm, best, q);
+        let better = match turn {
+            Orientation::Collinear => q.x < best.x,
+            t => t == outside_mp.reversed(),
+        };
+        if better {
+            best = q;
+        }
+    }
+    best
+}
+
+/// The node at position `target` (merged, of `component`) whose corner contains the
+/// direction towards M: the occurrence M can connect to without crossing its edges.
+fn visible_node_at(cx: &Context, target: Point, pm: Point, component: u32) -> Option<NodeId> {
+    let mut fallback = None;
+    for x in cx.bands.query(target.y, target.y) {
+        let node = cx.pool.get(x);
+        if node.removed || node.p != target || cx.rings[node.ring as usize].component != component {
+            continue;
+        }
+        if !cx.rings[node.ring as usize].merged {
+            continue;
+        }
+        let (xn, xp) = (cx.pool.p(node.next), cx.pool.p(node.prev));
+        if corner_contains(target, xn, xp, pm) == Some(true) {
+            return Some(x);
+        }
+        fallback = fallback.or(Some(x));
+    }
+    // no corner contains M strictly: only for invalid (lenient) input
+    fallback
+}

@@ -1,4 +1,216 @@
-//! Stage 2, *clean*.
+//! Stage 2, *clean*: make every ring a proper one and every position one vertex.
+//!
+//! 1. Drop repeated vertices, collinear vertices and zero-width spikes from each ring
+//!    (earcut's `filterPoints`); a ring left with fewer than three vertices encloses no area
+//!    and is dropped.
+//! 2. Sweep all edges (`validate`): crossing edges are refused in strict mode; vertices
+//!    lying inside another edge ("T-junctions", e.g. a hole touching the outer ring in the
+//!    middle of an edge) are found in both modes.
+//! 3. Give every position one vertex index: where rings touch, all nodes there use the
+//!    lowest input index, so the output mesh is consistent by index.
+//! 4. Split each touched edge at the vertices lying on it: touching happens only at
+//!    vertices from here on.
+//! 5. Find each ring's rightmost vertex (ties: lowest y), its winding from the turn there,
+//!    and make every ring counter-clockwise. No winding order is assumed from the caller.
+
+use crate::pool::NodeId;
+use crate::predicates::{cmp_xy, orient2d, within_box, Orientation};
+use crate::report::{DropReason, Dropped, RepairKind};
 use crate::triangulator::Context;
+use crate::validate::{self, Crossing};
 use crate::Error;
-pub(crate) fn clean(cx: &mut Context) -> Result<(), Error> { let _ = cx; Ok(()) }
+
+/// Runs the clean stage over every loaded ring.
+pub(crate) fn clean(cx: &mut Context) -> Result<(), Error> {
+    for r in 0..cx.rings.len() {
+        filter_ring(cx, r);
+    }
+    sweep(cx)?;
+    canonical_vertices(cx);
+    split_touched_edges(cx);
+    for r in 0..cx.rings.len() {
+        if cx.rings[r].alive {
+            orient_ring(cx, r);
+        }
+    }
+    Ok(())
+}
+
+/// Drops repeated, collinear and spike vertices from ring `r`; kills it when fewer than
+/// three vertices remain.
+fn filter_ring(cx: &mut Context, r: usize) {
+    let ring_id = cx.rings[r].input;
+    let mut len = cx.rings[r].len;
+    let mut n = cx.rings[r].start;
+    // `stop` is the last node known good; a full lap without removal ends the loop.
+    let mut stop = cx.pool.prev(n);
+    while len >= 3 {
+        let (prev, next) = (cx.pool.prev(n), cx.pool.next(n));
+        let (pp, pn, px) = (cx.pool.p(prev), cx.pool.p(n), cx.pool.p(next));
+        let reason = if pp == pn {
+            Some(DropReason::Repeated)
+        } else if pn == px {
+            // drop the later of two repeated vertices (a closing point, typically)
+            drop_node(cx, next, ring_id, DropReason::Repeated);
+            len -= 1;
+            stop = prev;
+            continue;
+        } else if orient2d(pp, pn, px) != Orientation::Collinear {
+            None
+        } else if within_box(pp, px, pn) {
+            Some(DropReason::Collinear)
+        } else {
+            Some(DropReason::Spike)
+        };
+        match reason {
+            Some(reason) => {
+                drop_node(cx, n, ring_id, reason);
+                len -= 1;
+                // the previous vertex may have become collinear or a spike: look again
+                n = prev;
+                stop = cx.pool.prev(prev);
+            }
+            None => {
+                if n == stop {
+                    break;
+                }
+                n = next;
+            }
+        }
+    }
+    let ring = &mut cx.rings[r];
+    ring.len = len;
+    ring.start = n;
+    if len < 3 {
+        ring.alive = false;
+        ring.len = 0;
+        for _ in 0..len {
+            let next = cx.pool.next(n);
+            drop_node(cx, n, ring_id, DropReason::DegenerateRing);
+            n = next;
+        }
+    }
+}
+
+/// Unlinks node `n` and records its vertex as dropped.
+fn drop_node(cx: &mut Context, n: NodeId, ring: u32, reason: DropReason) {
+    let vertex = cx.pool.get(n).vertex;
+    cx.pool.remove(n);
+    cx.dropped.push(Dropped { vertex, ring, reason });
+}
+
+/// Sweeps every live edge: crossings are errors in strict mode, repairs in lenient mode.
+fn sweep(cx: &mut Context) -> Result<(), Error> {
+    cx.starts.clear();
+    cx.starts.extend(cx.rings.iter().filter(|r| r.alive).map(|r| r.start));
+    cx.touches.clear();
+    cx.crossings.clear();
+    validate::sweep(
+        &cx.pool,
+        &cx.starts,
+        &mut cx.sweep,
+        !cx.lenient,
+        &mut cx.touches,
+        &mut cx.crossings,
+    );
+    if let Some(&Crossing { a, b }) = cx.crossings.first() {
+        if !cx.lenient {
+            let (na, nb) = (cx.pool.get(a), cx.pool.get(b));
+            return Err(Error::EdgesCross {
+                ring_a: cx.rings[na.ring as usize].input as usize,
+                edge_a: na.vertex as usize,
+                ring_b: cx.rings[nb.ring as usize].input as usize,
+                edge_b: nb.vertex as usize,
+            });
+        }
+        for i in 0..cx.crossings.len() {
+            let a = cx.pool.get(cx.crossings[i].a);
+            let (ring, vertex) = (cx.rings[a.ring as usize].input, a.vertex);
+            cx.repair(RepairKind::EdgesCross, ring, vertex);
+        }
+    }
+    Ok(())
+}
+
+/// Makes all nodes at one position use one vertex index, the lowest; reports the others.
+fn canonical_vertices(cx: &mut Context) {
+    let order = &cx.sweep.order;
+    let mut i = 0;
+    while i < order.len() {
+        let p = cx.pool.p(order[i]);
+        let mut j = i + 1;
+        while j < order.len() && cx.pool.p(order[j]) == p {
+            j += 1;
+        }
+        if j - i > 1 {
+            let min = order[i..j].iter().map(|&n| cx.pool.get(n).vertex).min().unwrap_or(0);
+            for &n in &order[i..j] {
+                let node = cx.pool.get_mut(n);
+                if node.vertex != min {
+                    let (vertex, ring) = (node.vertex, node.ring);
+                    node.vertex = min;
+                    let ring = cx.rings[ring as usize].input;
+                    cx.dropped.push(Dropped { vertex, ring, reason: DropReason::Coincident });
+                }
+            }
+        }
+        i = j;
+    }
+}
+
+/// Inserts a node into every edge at each vertex found lying inside it, in order along the
+/// edge, so that rings touch only at shared vertices.
+fn split_touched_edges(cx: &mut Context) {
+    if cx.touches.is_empty() {
+        return;
+    }
+    let pool = &cx.pool;
+    // group by edge, then order along the edge (the points are collinear with it, so
+    // comparing coordinates in the edge's direction orders them exactly)
+    cx.touches.sort_unstable_by(|s, t| {
+        s.edge.cmp(&t.edge).then_with(|| {
+            let (a, b) = (pool.p(s.edge), pool.p(pool.next(s.edge)));
+            let (ps, pt) = (pool.p(s.vertex), pool.p(t.vertex));
+            let ord = cmp_xy(ps, pt);
+            if cmp_xy(a, b).is_le() {
+                ord
+            } else {
+                ord.reverse()
+            }
+        })
+    });
+    let mut k = 0;
+    while k < cx.touches.len() {
+        let edge = cx.touches[k].edge;
+        let mut after = edge;
+        while k < cx.touches.len() && cx.touches[k].edge == edge {
+            let v = cx.touches[k].vertex;
+            let (p, vertex) = (cx.pool.p(v), cx.pool.get(v).vertex);
+            if cx.pool.p(after) != p {
+                after = cx.pool.insert_after(after, p, vertex);
+                let ring = cx.pool.get(edge).ring as usize;
+                cx.rings[ring].len += 1;
+            }
+            k += 1;
+        }
+    }
+}
+
+/// Finds ring `r`'s rightmost vertex and makes the ring counter-clockwise.
+fn orient_ring(cx: &mut Context, r: usize) {
+    let start = cx.rings[r].start;
+    let mut best = start;
+    for n in cx.pool.ring(start) {
+        let (p, b) = (cx.pool.p(n), cx.pool.p(best));
+        if p.x > b.x || (p.x == b.x && p.y < b.y) {
+            best = n;
+        }
+    }
+    cx.rings[r].rightmost = best;
+    // At the rightmost-lowest vertex the ring turns strictly (no repeats, no spikes, and a
+    // split node is never rightmost-lowest), so this turn gives the winding.
+    let turn = orient2d(cx.pool.p(cx.pool.prev(best)), cx.pool.p(best), cx.pool.p(cx.pool.next(best)));
+    if turn == Orientation::Clockwise {
+        cx.pool.reverse(start);
+    }
+}

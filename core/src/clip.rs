@@ -1,6 +1,410 @@
-//! Stage 5, *clip*.
+//! Stage 5, *clip*: cut ears until every polygon is triangles.
+//!
+//! After bridging, each polygon is one counter-clockwise ring, weakly simple: bridges and
+//! touching rings make it visit some positions more than once. An ear a → b → c (tip b) is
+//! cut when b turns strictly left and no other vertex interferes with the triangle:
+//!
+//! - none lies strictly inside it, or inside the diagonal a–c;
+//! - none sits on its boundary (at a corner, or inside edge a–b or b–c) with an edge
+//!   running into the triangle.
+//!
+//! Only reflex vertices (including straight ones) need checking: if any vertex interferes,
+//! a reflex one does (the interfering chain's extreme vertex towards b turns right). That is
+//! the classic argument, and it holds at touching points because each extra occurrence of a
+//! position is its own corner.
+//!
+//! `Strategy::Fast` walks the ring (paper §3.3): a tip that failed is marked "not an ear"
+//! until a neighbour changes, and once at most one reflex vertex is left the rest is a fan
+//! from it. `Strategy::Quality` always cuts the ear with the smallest angle at its tip (Mei
+//! et al.), from a priority queue; an ear's status changes only when a neighbour is cut, so
+//! only the two neighbours are re-examined.
+//!
+//! A ring with no ear left is not a valid polygon (or this is a bug): strict mode reports an
+//! internal error, lenient mode cuts a best-effort triangle and says so.
+
+use std::cmp::Reverse;
+use std::collections::BinaryHeap;
+
+use crate::pool::NodeId;
+use crate::predicates::{approx_interior_angle, left_of, orient2d, Orientation, Point};
+use crate::report::RepairKind;
 use crate::triangulator::Context;
 use crate::{Error, Strategy};
+
+/// Reusable buffers of the clip stage.
 #[derive(Debug, Default)]
-pub(crate) struct ClipScratch {}
-pub(crate) fn clip(cx: &mut Context, strategy: Strategy, out: &mut Vec<[u32; 3]>) -> Result<usize, Error> { let _ = (cx, strategy, out); Ok(0) }
+pub(crate) struct ClipScratch {
+    /// Reflex (or straight) nodes of the polygon being clipped; entries go stale when a node
+    /// turns convex or is cut, and are skipped then.
+    reflex: Vec<NodeId>,
+    /// Quality strategy: candidate ears by angle at the tip, with the node's stamp.
+    heap: BinaryHeap<Reverse<(u64, NodeId, u32)>>,
+}
+
+/// One polygon being clipped.
+struct Clipper<'a> {
+    cx: &'a mut Context,
+    out: &'a mut Vec<[u32; 3]>,
+    /// Live nodes left.
+    len: usize,
+    /// Live reflex nodes left.
+    reflex_count: usize,
+    /// The fan shortcut failed once (a degenerate ring): don't try again.
+    no_fan: bool,
+}
+
+/// Clips every polygon; returns how many there were.
+pub(crate) fn clip(cx: &mut Context, strategy: Strategy, out: &mut Vec<[u32; 3]>) -> Result<usize, Error> {
+    let mut polygons = 0;
+    for r in 0..cx.rings.len() {
+        let ring = cx.rings[r];
+        if !ring.alive || !ring.merged || ring.component != r as u32 {
+            continue;
+        }
+        polygons += 1;
+        let mut clipper = Clipper::new(cx, out, ring.start);
+        match strategy {
+            Strategy::Fast => clipper.fast(ring.start)?,
+            Strategy::Quality => clipper.quality(ring.start)?,
+        }
+    }
+    Ok(polygons)
+}
+
+impl<'a> Clipper<'a> {
+    /// Classifies the ring through `start` and lists its reflex nodes.
+    fn new(cx: &'a mut Context, out: &'a mut Vec<[u32; 3]>, start: NodeId) -> Self {
+        cx.clip.reflex.clear();
+        let mut len = 0;
+        let mut n = start;
+        loop {
+            let reflex = turn(cx, n) != Orientation::CounterClockwise;
+            cx.pool.get_mut(n).reflex = reflex;
+            cx.pool.get_mut(n).not_ear = false;
+            if reflex {
+                cx.clip.reflex.push(n);
+            }
+            len += 1;
+            n = cx.pool.next(n);
+            if n == start {
+                break;
+            }
+        }
+        let reflex_count = cx.clip.reflex.len();
+        Clipper { cx, out, len, reflex_count, no_fan: false }
+    }
+
+    /// The paper's high-performance walk.
+    fn fast(&mut self, start: NodeId) -> Result<(), Error> {
+        let mut ear = start;
+        let mut stop = ear;
+        while self.len > 3 {
+            if self.reflex_count <= 1 && !self.no_fan && self.try_fan(ear) {
+                return Ok(());
+            }
+            if !self.cx.pool.get(ear).not_ear {
+                if self.is_ear(ear) {
+                    let next = self.cx.pool.next(ear);
+                    ear = self.cut(ear);
+                    // continue past the new corner, as earcut does
+                    ear = if self.cx.pool.get(next).removed { ear } else { self.cx.pool.next(next) };
+                    stop = ear;
+                    continue;
+                }
+                self.cx.pool.get_mut(ear).not_ear = true;
+            }
+            ear = self.cx.pool.next(ear);
+            if ear == stop {
+                ear = self.stuck(ear)?;
+                stop = ear;
+            }
+        }
+        self.finish(ear);
+        Ok(())
+    }
+
+    /// Mei et al.: always the ear with the smallest angle at its tip.
+    fn quality(&mut self, start: NodeId) -> Result<(), Error> {
+        self.cx.clip.heap.clear();
+        self.seed_heap(start);
+        let mut last = start;
+        while self.len > 3 {
+            let Some(Reverse((_, n, stamp))) = self.cx.clip.heap.pop() else {
+                last = self.stuck(last)?;
+                self.seed_heap(last);
+                continue;
+            };
+            let node = self.cx.pool.get(n);
+            if node.removed || node.stamp != stamp || !self.is_ear(n) {
+                continue;
+            }
+            let prev = self.cx.pool.prev(n);
+            last = self.cut(n);
+            for m in [prev, last] {
+                let node = self.cx.pool.get(m);
+                if !node.removed {
+                    self.push_if_ear(m);
+                }
+            }
+            if self.cx.pool.get(last).removed {
+                last = prev;
+            }
+        }
+        self.finish(last);
+        Ok(())
+    }
+
+    /// Pushes every ear of the ring through `start`.
+    fn seed_heap(&mut self, start: NodeId) {
+        let mut n = start;
+        for _ in 0..self.len {
+            self.push_if_ear(n);
+            n = self.cx.pool.next(n);
+        }
+    }
+
+    /// Queues `n` by its tip angle when it is an ear.
+    fn push_if_ear(&mut self, n: NodeId) {
+        if self.cx.pool.get(n).reflex || !self.is_ear(n) {
+            return;
+        }
+        let (a, b, c) = self.corner(n);
+        // positive angles order like their bit patterns
+        let key = approx_interior_angle(a, b, c).to_bits();
+        let stamp = self.cx.pool.get(n).stamp;
+        self.cx.clip.heap.push(Reverse((key, n, stamp)));
+    }
+
+    /// Positions of `n`'s predecessor, `n` and its successor.
+    fn corner(&self, n: NodeId) -> (Point, Point, Point) {
+        let pool = &self.cx.pool;
+        (pool.p(pool.prev(n)), pool.p(n), pool.p(pool.next(n)))
+    }
+
+    /// Whether a → b → c, with b = `ear`, can be cut (see the module docs).
+    fn is_ear(&self, ear: NodeId) -> bool {
+        let pool = &self.cx.pool;
+        let (an, cn) = (pool.prev(ear), pool.next(ear));
+        let (a, b, c) = (pool.p(an), pool.p(ear), pool.p(cn));
+        if orient2d(a, b, c) != Orientation::CounterClockwise {
+            return false;
+        }
+        let (x0, x1) = (a.x.min(b.x).min(c.x), a.x.max(b.x).max(c.x));
+        let (y0, y1) = (a.y.min(b.y).min(c.y), a.y.max(b.y).max(c.y));
+        for &r in &self.cx.clip.reflex {
+            let node = pool.get(r);
+            if node.removed || !node.reflex || r == an || r == ear || r == cn {
+                continue;
+            }
+            let q = node.p;
+            if q.x < x0 || q.x > x1 || q.y < y0 || q.y > y1 {
+                continue;
+            }
+            if interferes(pool, r, a, b, c) {
+                return false;
+            }
+        }
+        true
+    }
+
+    /// Cuts the ear at `ear`, tidies its neighbours; returns the successor.
+    fn cut(&mut self, ear: NodeId) -> NodeId {
+        let pool = &self.cx.pool;
+        let (a, c) = (pool.prev(ear), pool.next(ear));
+        self.emit(a, ear, c);
+        self.unlink(ear);
+        self.tidy(a);
+        self.tidy(c);
+        if self.cx.pool.get(c).removed {
+            self.cx.pool.next(a)
+        } else {
+            c
+        }
+    }
+
+    /// Writes the triangle a, b, c.
+    fn emit(&mut self, a: NodeId, b: NodeId, c: NodeId) {
+        let pool = &self.cx.pool;
+        self.out.push([pool.get(a).vertex, pool.get(b).vertex, pool.get(c).vertex]);
+    }
+
+    /// Unlinks `n`, keeping the counts.
+    fn unlink(&mut self, n: NodeId) {
+        if self.cx.pool.get(n).reflex {
+            self.reflex_count -= 1;
+        }
+        self.cx.pool.remove(n);
+        self.len -= 1;
+    }
+
+    /// After a neighbour was cut: drop `n` if it repeats its successor's position or is the
+    /// tip of a zero-width wall whose both sides are done, then reclassify what is left.
+    fn tidy(&mut self, mut n: NodeId) {
+        while self.len > 2 && !self.cx.pool.get(n).removed {
+            let (prev, next) = (self.cx.pool.prev(n), self.cx.pool.next(n));
+            let (pp, pn, px) = (self.cx.pool.p(prev), self.cx.pool.p(n), self.cx.pool.p(next));
+            if pn == px {
+                // same position, same vertex index (clean made it so)
+                self.unlink(next);
+            } else if pp == px {
+                // a wall: out to n and straight back
+                self.unlink(n);
+                n = prev;
+            } else {
+                break;
+            }
+        }
+        for m in [self.cx.pool.prev(n), n, self.cx.pool.next(n)] {
+            self.reclassify(m);
+        }
+    }
+
+    /// Updates whether `n` is reflex.
+    fn reclassify(&mut self, n: NodeId) {
+        if self.cx.pool.get(n).removed {
+            return;
+        }
+        let reflex = turn(self.cx, n) != Orientation::CounterClockwise;
+        let node = self.cx.pool.get_mut(n);
+        if node.reflex != reflex {
+            node.reflex = reflex;
+            if reflex {
+                // only possible around removed walls: list it again
+                self.reflex_count += 1;
+                self.cx.clip.reflex.push(n);
+            } else {
+                self.reflex_count -= 1;
+            }
+        }
+    }
+
+    /// With at most one reflex vertex left, the polygon is star-shaped from it: fan. Every
+    /// fan triangle is checked to turn left first; if one does not, nothing is written.
+    fn try_fan(&mut self, any: NodeId) -> bool {
+        let pool = &self.cx.pool;
+        let center = if self.reflex_count == 1 {
+            match self.cx.clip.reflex.iter().copied().find(|&r| {
+                let node = pool.get(r);
+                !node.removed && node.reflex
+            }) {
+                Some(r) => r,
+                None => return false,
+            }
+        } else {
+            any
+        };
+        let pc = pool.p(center);
+        let mut v = pool.next(center);
+        while pool.next(v) != center {
+            if orient2d(pc, pool.p(v), pool.p(pool.next(v))) != Orientation::CounterClockwise {
+                self.no_fan = true;
+                return false;
+            }
+            v = pool.next(v);
+        }
+        let mut v = self.cx.pool.next(center);
+        while self.cx.pool.next(v) != center {
+            let w = self.cx.pool.next(v);
+            self.emit(center, v, w);
+            v = w;
+        }
+        true
+    }
+
+    /// The last triangle, when it has area.
+    fn finish(&mut self, n: NodeId) {
+        if self.len == 3 {
+            let (a, c) = (self.cx.pool.prev(n), self.cx.pool.next(n));
+            if orient2d(self.cx.pool.p(a), self.cx.pool.p(n), self.cx.pool.p(c)) == Orientation::CounterClockwise {
+                self.emit(a, n, c);
+            }
+        }
+    }
+
+    /// No ear in a whole lap. A ring enclosing no area is done; otherwise the input was not
+    /// valid: strict mode gives up, lenient mode cuts the best triangle it can.
+    fn stuck(&mut self, at: NodeId) -> Result<NodeId, Error> {
+        let mut n = at;
+        let mut convex = None;
+        let mut relaxed = None;
+        for _ in 0..self.len {
+            if turn(self.cx, n) == Orientation::CounterClockwise {
+                convex = convex.or(Some(n));
+                if relaxed.is_none() && !self.has_vertex_inside(n) {
+                    relaxed = Some(n);
+                }
+            }
+            n = self.cx.pool.next(n);
+        }
+        let Some(convex) = convex else {
+            // all straight or reflex: no area left (a counter-clockwise ring with area has
+            // a left turn), so this piece is done
+            if self.cx.lenient && self.len > 2 {
+                let ring = self.cx.pool.get(at).ring;
+                let input = self.cx.rings[ring as usize].input;
+                self.cx.repair(RepairKind::DegeneratePiece, input, self.cx.pool.get(at).vertex);
+            }
+            self.len = 0;
+            return Ok(at);
+        };
+        if !self.cx.lenient {
+            return Err(Error::Internal { stage: "clip" });
+        }
+        let tip = relaxed.unwrap_or(convex);
+        let ring = self.cx.pool.get(tip).ring;
+        let input = self.cx.rings[ring as usize].input;
+        self.cx.repair(RepairKind::ForcedEar, input, self.cx.pool.get(tip).vertex);
+        Ok(self.cut(tip))
+    }
+
+    /// Lenient fallback test: some reflex vertex strictly inside the triangle at `ear`.
+    fn has_vertex_inside(&self, ear: NodeId) -> bool {
+        let (a, b, c) = self.corner(ear);
+        self.cx.clip.reflex.iter().any(|&r| {
+            let node = self.cx.pool.get(r);
+            !node.removed
+                && node.reflex
+                && left_of(a, b, node.p)
+                && left_of(b, c, node.p)
+                && left_of(c, a, node.p)
+        })
+    }
+}
+
+/// The turn prev(n) → n → next(n).
+fn turn(cx: &Context, n: NodeId) -> Orientation {
+    let pool = &cx.pool;
+    orient2d(pool.p(pool.prev(n)), pool.p(n), pool.p(pool.next(n)))
+}
+
+/// Whether node `r` spoils the ear triangle a, b, c (counter-clockwise): it lies strictly
+/// inside, inside the diagonal a–c, or on the boundary with an edge running inside.
+fn interferes(pool: &crate::pool::Pool, r: NodeId, a: Point, b: Point, c: Point) -> bool {
+    use Orientation::*;
+    let q = pool.p(r);
+    let (oab, obc, oca) = (orient2d(a, b, q), orient2d(b, c, q), orient2d(c, a, q));
+    if oab == Clockwise || obc == Clockwise || oca == Clockwise {
+        return false;
+    }
+    if oab == CounterClockwise && obc == CounterClockwise && oca == CounterClockwise {
+        return true;
+    }
+    // on the boundary: which part of it?
+    let enters = |inside: &dyn Fn(Point) -> bool| {
+        inside(pool.p(pool.prev(r))) || inside(pool.p(pool.next(r)))
+    };
+    if q == a {
+        enters(&|p| left_of(a, b, p) && left_of(c, a, p))
+    } else if q == b {
+        enters(&|p| left_of(a, b, p) && left_of(b, c, p))
+    } else if q == c {
+        enters(&|p| left_of(b, c, p) && left_of(c, a, p))
+    } else if oca == Collinear {
+        // inside the diagonal: cutting would leave a vertex inside an edge
+        true
+    } else if oab == Collinear {
+        enters(&|p| left_of(a, b, p))
+    } else {
+        enters(&|p| left_of(b, c, p))
+    }
+}

@@ -55,16 +55,13 @@ pub enum Error {
         /// Start vertex of the second edge.
         edge_b: usize,
     },
-    /// Two edges overlap along a segment without sharing both endpoints (strict mode only).
-    EdgesOverlap {
-        /// Ring of the first edge.
-        ring_a: usize,
-        /// Start vertex of the first edge.
-        edge_a: usize,
-        /// Ring of the second edge.
-        ring_b: usize,
-        /// Start vertex of the second edge.
-        edge_b: usize,
+    /// Every corner of a ring coincides with a corner of another ring: the two rings
+    /// overlap, so which is inside which is undefined (strict mode only).
+    RingsOverlap {
+        /// The ring all of whose corners are shared.
+        ring: usize,
+        /// One of its vertices.
+        vertex: usize,
     },
     /// With [`Nesting::FirstIsOuter`](crate::Nesting::FirstIsOuter): a hole is not inside the
     /// outer ring, or lies inside another hole (strict mode only).
@@ -107,9 +104,9 @@ impl fmt::Display for Error {
                 f,
                 "edges cross: ring {ring_a} edge from vertex {edge_a} and ring {ring_b} edge from vertex {edge_b}"
             ),
-            Error::EdgesOverlap { ring_a, edge_a, ring_b, edge_b } => write!(
+            Error::RingsOverlap { ring, vertex } => write!(
                 f,
-                "edges overlap: ring {ring_a} edge from vertex {edge_a} and ring {ring_b} edge from vertex {edge_b}"
+                "ring {ring} overlaps another ring: each of its corners (e.g. at vertex {vertex}) is also a corner of another ring"
             ),
             Error::HoleOutside { ring } => write!(
                 f,

@@ -27,6 +27,8 @@ pub(crate) struct Node {
     pub next: NodeId,
     /// Unlinked from its ring.
     pub removed: bool,
+    /// Clipping: the turn prev → self → next is not strictly counter-clockwise.
+    pub reflex: bool,
     /// Clipping: failed the ear test, skip until a neighbour changes (paper §3.3).
     pub not_ear: bool,
     /// Bumped whenever the node's ear status may have changed (quality strategy's queue).
@@ -84,6 +86,7 @@ impl Pool {
             prev: id,
             next: id,
             removed: false,
+            reflex: false,
             not_ear: false,
             stamp: 0,
         });
@@ -117,16 +120,24 @@ impl Pool {
         node.stamp = node.stamp.wrapping_add(1);
     }
 
+    /// Inserts a new node right after `after`, on `after`'s ring.
+    pub fn insert_after(&mut self, after: NodeId, p: Point, vertex: u32) -> NodeId {
+        let ring = self.get(after).ring;
+        let id = self.push(p, vertex, ring);
+        let next = self.next(after);
+        let n = self.get_mut(id);
+        n.prev = after;
+        n.next = next;
+        self.get_mut(after).next = id;
+        self.get_mut(next).prev = id;
+        id
+    }
+
     /// Inserts a copy of `n` (same position and vertex) right after `after`.
     fn copy_after(&mut self, n: NodeId, after: NodeId) -> NodeId {
         let node = *self.get(n);
-        let id = self.push(node.p, node.vertex, node.ring);
-        let next = self.next(after);
-        let c = self.get_mut(id);
-        c.prev = after;
-        c.next = next;
-        self.get_mut(after).next = id;
-        self.get_mut(next).prev = id;
+        let id = self.insert_after(after, node.p, node.vertex);
+        self.get_mut(id).ring = node.ring;
         id
     }
 

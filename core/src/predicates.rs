@@ -106,13 +106,6 @@ pub(crate) fn approx_interior_angle(a: Point, b: Point, c: Point) -> f64 {
     }
 }
 
-/// Twice the signed area of the triangle a, b, c in floating point. **Not exact**: used only
-/// for reports and tie-free heuristics, never for a decision.
-#[inline]
-pub(crate) fn approx_double_area(a: Point, b: Point, c: Point) -> f64 {
-    (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -2,12 +2,16 @@
 
 /// Why an input vertex is not used by any triangle.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum DropReason {
     /// Same position as the vertex before it in its ring (this includes a repeated closing
     /// point).
     Repeated,
     /// Lies on the straight line between its neighbours; the edge runs through it.
     Collinear,
+    /// Same position as another input vertex further on in its ring or in another ring
+    /// (rings touching there); triangles use the lowest-numbered vertex at that position.
+    Coincident,
     /// The tip of a zero-width spike: the ring runs out to it and straight back.
     Spike,
     /// Its ring has fewer than three distinct, non-collinear points and encloses no area.

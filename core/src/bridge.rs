@@ -275,3 +275,145 @@ fn visible_node_at(cx: &Context, target: Point, pm: Point, component: u32) -> Op
     // no corner contains M strictly: only for invalid (lenient) input
     fallback
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::triangulator::Context;
+    use crate::{clean, load, nest, Nesting};
+
+    /// Runs the stages up to bridging; returns the outer ring's vertex sequence.
+    fn bridged(vertices: &[[f64; 2]], starts: &[usize]) -> Vec<u32> {
+        let mut cx = Context::default();
+        load::load(&mut cx, vertices, starts).unwrap();
+        clean::clean(&mut cx).unwrap();
+        nest::nest(&mut cx, Nesting::Auto).unwrap();
+        bridge(&mut cx).unwrap();
+        let start = cx.rings[0].start;
+        cx.pool.ring(start).map(|n| cx.pool.get(n).vertex).collect()
+    }
+
+    /// The vertex the hole vertex `m` was bridged to (its predecessor in the merged ring).
+    fn bridge_target(vertices: &[[f64; 2]], starts: &[usize], m: u32) -> u32 {
+        let ring = bridged(vertices, starts);
+        let k = ring.iter().position(|&v| v == m).expect("hole vertex in the merged ring");
+        ring[(k + ring.len() - 1) % ring.len()]
+    }
+
+    /// Rotates by 90° k times, exactly.
+    fn rotated(vertices: &[[f64; 2]], k: usize) -> Vec<[f64; 2]> {
+        vertices
+            .iter()
+            .map(|&[x, y]| match k % 4 {
+                0 => [x, y],
+                1 => [-y, x],
+                2 => [-x, -y],
+                _ => [y, -x],
+            })
+            .collect()
+    }
+
+    const SQUARE: [[f64; 2]; 4] = [[0., 0.], [10., 0.], [10., 10.], [0., 10.]];
+
+    #[test]
+    fn ray_hits_edge_inside_then_endpoint_with_larger_x_lower_y() {
+        // the ray from M = (6,5) hits the vertical edge x = 10 at (10,5): both endpoints
+        // have x = 10, so P is the lower one, vertex 1
+        let mut v = SQUARE.to_vec();
+        v.extend([[4., 4.], [6., 5.], [4., 6.]]);
+        assert_eq!(bridge_target(&v, &[0, 4], 5), 1);
+    }
+
+    #[test]
+    fn ray_hits_vertex_exactly() {
+        let v = [[0., 0.], [10., 0.], [12., 5.], [10., 10.], [0., 10.], [4., 4.], [6., 5.], [4., 6.]];
+        assert_eq!(bridge_target(&v, &[0, 5], 6), 2);
+    }
+
+    #[test]
+    fn reflex_vertex_inside_triangle_blocks_p() {
+        // notch tip (8,3) lies inside triangle M(6,5), I(10,5), P(10,0)
+        let v = [
+            [0., 0.], [7., 0.], [8., 3.], [9., 0.], [10., 0.], [10., 10.], [0., 10.],
+            [4., 4.], [6., 5.], [4., 6.],
+        ];
+        assert_eq!(bridge_target(&v, &[0, 7], 8), 2);
+    }
+
+    #[test]
+    fn smallest_angle_to_the_ray_wins() {
+        // (8,3) at 45° and (9,4.5) at about 9.5° below the ray: the smaller angle wins
+        let v = [
+            [0., 0.], [7., 0.], [8., 3.], [8.5, 0.], [9., 4.5], [9.5, 0.], [10., 0.], [10., 10.],
+            [0., 10.], [4., 4.], [6., 5.], [4., 6.],
+        ];
+        assert_eq!(bridge_target(&v, &[0, 9], 10), 4);
+    }
+
+    #[test]
+    fn equal_angles_pick_the_nearest() {
+        // (8,4) and (9,3.5) lie on one ray from M = (6,5): the nearer one hides the other
+        let v = [
+            [0., 0.], [7., 0.], [8., 4.], [8.5, 0.], [9., 3.5], [9.5, 0.], [10., 0.], [10., 10.],
+            [0., 10.], [4., 4.], [6., 5.], [4., 6.],
+        ];
+        assert_eq!(bridge_target(&v, &[0, 9], 10), 2);
+    }
+
+    #[test]
+    fn rules_hold_in_every_rotation_and_winding() {
+        // the same configuration rotated and with the outer ring reversed: still bridged to
+        // the smallest-angle vertex, whose index does not change
+        let v = [
+            [0., 0.], [7., 0.], [8., 3.], [8.5, 0.], [9., 4.5], [9.5, 0.], [10., 0.], [10., 10.],
+            [0., 10.], [4., 4.], [6., 5.], [4., 6.],
+        ];
+        for k in 0..4 {
+            let r = rotated(&v, k);
+            // after a rotation another hole vertex is rightmost and the ray runs elsewhere:
+            // check that exactly one two-way bridge merged the hole
+            let ring = bridged(&r, &[0, 9]);
+            assert_eq!(ring.len(), 9 + 3 + 2, "rotation {k}");
+        }
+        let mut reversed = v[..9].to_vec();
+        reversed.reverse();
+        reversed.extend_from_slice(&v[9..]);
+        // reversed outer: vertex i of the input is now 8 - i
+        assert_eq!(bridge_target(&reversed, &[0, 9], 10), 8 - 4);
+    }
+
+    #[test]
+    fn coincident_bridge_edges_take_the_one_facing_m() {
+        // hole A (rightmost (15,10)) is bridged first, to (20,0); hole B's ray from (10,5)
+        // hits that bridge at (17.5,5), where two copies run in opposite directions. Only
+        // the upward copy has M on its inner side; P is its endpoint (20,0), vertex 1.
+        let v = [
+            [0., 0.], [20., 0.], [20., 20.], [0., 20.],
+            [13., 9.], [15., 10.], [13., 11.],
+            [8., 4.], [10., 5.], [8., 6.],
+        ];
+        let ring = bridged(&v, &[0, 4, 7]);
+        assert_eq!(ring.len(), 4 + 3 + 3 + 4);
+        let k = ring.iter().position(|&x| x == 8).unwrap();
+        assert_eq!(ring[(k + ring.len() - 1) % ring.len()], 1);
+        // and the ring stays consistent: (20,0) appears three times, once per bridge side
+        assert_eq!(ring.iter().filter(|&&x| x == 1).count(), 3);
+    }
+
+    #[test]
+    fn compare_hits_is_exact() {
+        let y = 0.1;
+        // two upward edges crossing y = 0.1 at x values that differ by one ulp or so
+        let a = Point::new(1.0, 0.0);
+        let b = Point::new(1.0 + 3.0 * f64::EPSILON, 0.3);
+        let c = Point::new(1.0, -0.1);
+        let d = Point::new(1.0, 0.3);
+        // c→d is the vertical line x = 1; a→b leans right, so at y = 0.1 it is right of x=1
+        assert_eq!(compare_hits(y, a, b, c, d), Ordering::Less);
+        assert_eq!(compare_hits(y, c, d, a, b), Ordering::Greater);
+        assert_eq!(compare_hits(y, c, d, c, d), Ordering::Equal);
+        // edges sharing their endpoint on the line: equal hits
+        let e = Point::new(2.0, 0.1);
+        assert_eq!(compare_hits(y, Point::new(1., -1.), e, e, Point::new(3., 1.)), Ordering::Equal);
+    }
+}

@@ -24,7 +24,7 @@
 
 use core::cmp::Ordering;
 
-use crate::nest::{corner_contains, index_all_edges, skip_ring};
+use crate::nest::{corner_contains, index_all_edges, same_ray, skip_ring};
 use crate::pool::NodeId;
 use crate::predicates::{left_of, orient2d, Orientation, Point};
 use crate::triangulator::Context;
@@ -124,8 +124,10 @@ fn is_merged(cx: &Context, n: NodeId) -> bool {
     !node.removed && cx.rings[node.ring as usize].merged
 }
 
-/// A merged node at the hole vertex `m`'s own position whose corner holds the hole's corner
-/// there: the hole touches its polygon at M.
+/// A merged node at the hole vertex `m`'s own position whose corner holds the hole there:
+/// the hole touches its polygon at M. The hole fits when one of its edges at M runs
+/// strictly inside the node's corner, or when the hole fills that corner exactly (both
+/// edges along the corner's sides: the hole cancels a lobe of the polygon).
 fn find_touching(cx: &Context, m: NodeId) -> Option<NodeId> {
     let pm = cx.pool.p(m);
     let (mn, mp) = (cx.pool.p(cx.pool.next(m)), cx.pool.p(cx.pool.prev(m)));
@@ -134,7 +136,10 @@ fn find_touching(cx: &Context, m: NodeId) -> Option<NodeId> {
             return false;
         }
         let (xn, xp) = (cx.pool.p(cx.pool.next(x)), cx.pool.p(cx.pool.prev(x)));
-        corner_contains(pm, xn, xp, mn).or_else(|| corner_contains(pm, xn, xp, mp)) == Some(true)
+        match corner_contains(pm, xn, xp, mn).or_else(|| corner_contains(pm, xn, xp, mp)) {
+            Some(inside) => inside,
+            None => same_ray(pm, mn, xp) && same_ray(pm, mp, xn),
+        }
     })
 }
 

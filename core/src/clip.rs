@@ -62,18 +62,20 @@ pub(crate) fn clip(cx: &mut Context, strategy: Strategy, out: &mut Vec<[u32; 3]>
             continue;
         }
         polygons += 1;
-        let mut clipper = Clipper::new(cx, out, ring.start);
+        let (mut clipper, start) = Clipper::new(cx, out, ring.start);
         match strategy {
-            Strategy::Fast => clipper.fast(ring.start)?,
-            Strategy::Quality => clipper.quality(ring.start)?,
+            Strategy::Fast => clipper.fast(start)?,
+            Strategy::Quality => clipper.quality(start)?,
         }
     }
     Ok(polygons)
 }
 
 impl<'a> Clipper<'a> {
-    /// Classifies the ring through `start` and lists its reflex nodes.
-    fn new(cx: &'a mut Context, out: &'a mut Vec<[u32; 3]>, start: NodeId) -> Self {
+    /// Collapses zero-width walls, classifies the ring through `start` and lists its
+    /// reflex nodes. Returns the clipper and a live node to start from.
+    fn new(cx: &'a mut Context, out: &'a mut Vec<[u32; 3]>, start: NodeId) -> (Self, NodeId) {
+        let start = remove_walls(cx, start);
         cx.clip.reflex.clear();
         let mut len = 0;
         let mut n = start;
@@ -91,7 +93,7 @@ impl<'a> Clipper<'a> {
             }
         }
         let reflex_count = cx.clip.reflex.len();
-        Clipper { cx, out, len, reflex_count, no_fan: false }
+        (Clipper { cx, out, len, reflex_count, no_fan: false }, start)
     }
 
     /// The paper's high-performance walk.
@@ -368,6 +370,33 @@ impl<'a> Clipper<'a> {
                 && left_of(b, c, node.p)
                 && left_of(c, a, node.p)
         })
+    }
+}
+
+/// Removes repeated positions and the tips of zero-width walls (out and straight back,
+/// left where a hole cancels a lobe of its polygon) from the ring through `start`; returns
+/// a live node. Both kinds enclose no area and no triangle uses them.
+fn remove_walls(cx: &mut Context, start: NodeId) -> NodeId {
+    let pool = &mut cx.pool;
+    let mut n = start;
+    let mut stop = pool.prev(n);
+    loop {
+        let (prev, next) = (pool.prev(n), pool.next(n));
+        if next == n || prev == next {
+            return n; // fewer than three nodes: nothing to clip
+        }
+        if pool.p(n) == pool.p(next) {
+            pool.remove(next);
+            stop = prev;
+        } else if pool.p(prev) == pool.p(next) {
+            pool.remove(n);
+            n = prev;
+            stop = pool.prev(prev);
+        } else if n == stop {
+            return n;
+        } else {
+            n = next;
+        }
     }
 }
 

@@ -74,7 +74,8 @@ fn load_ring<T: Coord>(
     let ring = cx.rings.len() as u32;
     let first = cx.pool.len() as u32;
     for (i, v) in vertices.iter().enumerate().take(end).skip(start) {
-        let (x, y) = (v[0].to_f64(), v[1].to_f64());
+        // `+ 0.0` turns -0.0 into +0.0, so equal positions compare equal bit for bit too
+        let (x, y) = (v[0].to_f64() + 0.0, v[1].to_f64() + 0.0);
         if !(x.is_finite() && y.is_finite()) {
             if !cx.lenient {
                 return Err(Error::NonFinite { vertex: i });

@@ -28,6 +28,7 @@ pub(crate) fn clean(cx: &mut Context) -> Result<(), Error> {
     sweep(cx)?;
     canonical_vertices(cx);
     split_touched_edges(cx);
+    collect_shared(cx);
     for r in 0..cx.rings.len() {
         if cx.rings[r].alive {
             orient_ring(cx, r);
@@ -194,6 +195,34 @@ fn split_touched_edges(cx: &mut Context) {
             k += 1;
         }
     }
+}
+
+/// Lists every node at a position held by more than one node (rings touching there, or a
+/// ring touching itself), grouped by position, for `touch` to join them properly.
+fn collect_shared(cx: &mut Context) {
+    cx.shared.clear();
+    let order = &cx.sweep.order;
+    let mut i = 0;
+    while i < order.len() {
+        let p = cx.pool.p(order[i]);
+        let mut j = i + 1;
+        while j < order.len() && cx.pool.p(order[j]) == p {
+            j += 1;
+        }
+        if j - i > 1 {
+            cx.shared.extend_from_slice(&order[i..j]);
+        }
+        i = j;
+    }
+    // T-junction splits made new nodes at the touching vertices' positions
+    for t in &cx.touches {
+        cx.shared.push(t.vertex);
+    }
+    let split_nodes = cx.sweep.order.len()..cx.pool.len();
+    cx.shared.extend(split_nodes.map(|n| NodeId(n as u32)));
+    let pool = &cx.pool;
+    cx.shared.sort_unstable_by(|&a, &b| cmp_xy(pool.p(a), pool.p(b)).then(a.cmp(&b)));
+    cx.shared.dedup();
 }
 
 /// Finds ring `r`'s rightmost vertex and makes the ring counter-clockwise.

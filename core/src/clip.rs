@@ -26,7 +26,8 @@ use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 
 use crate::pool::NodeId;
-use crate::predicates::{approx_interior_angle, left_of, orient2d, Orientation, Point};
+use crate::nest::corner_contains;
+use crate::predicates::{approx_interior_angle, left_of, orient2d, within_box, Orientation, Point};
 use crate::report::RepairKind;
 use crate::triangulator::Context;
 use crate::{Error, Strategy};
@@ -39,6 +40,8 @@ pub(crate) struct ClipScratch {
     reflex: Vec<NodeId>,
     /// Quality strategy: candidate ears by angle at the tip, with the node's stamp.
     heap: BinaryHeap<Reverse<(u64, NodeId, u32)>>,
+    /// Rings still to clip: pieces of a polygon split by a diagonal (lenient fallback).
+    pending: Vec<NodeId>,
 }
 
 /// One polygon being clipped.
@@ -62,10 +65,14 @@ pub(crate) fn clip(cx: &mut Context, strategy: Strategy, out: &mut Vec<[u32; 3]>
             continue;
         }
         polygons += 1;
-        let (mut clipper, start) = Clipper::new(cx, out, ring.start);
-        match strategy {
-            Strategy::Fast => clipper.fast(start)?,
-            Strategy::Quality => clipper.quality(start)?,
+        cx.clip.pending.clear();
+        cx.clip.pending.push(ring.start);
+        while let Some(start) = cx.clip.pending.pop() {
+            let (mut clipper, start) = Clipper::new(cx, out, start);
+            match strategy {
+                Strategy::Fast => clipper.fast(start)?,
+                Strategy::Quality => clipper.quality(start)?,
+            }
         }
     }
     Ok(polygons)
@@ -132,9 +139,10 @@ impl<'a> Clipper<'a> {
         let mut last = start;
         while self.len > 3 {
             let Some(Reverse((_, n, stamp))) = self.cx.clip.heap.pop() else {
+                // No ear queued: invalid input (or a bug). Re-seeding the queue after every
+                // repair would cost a full scan each time; the walk finishes such rings.
                 last = self.stuck(last)?;
-                self.seed_heap(last);
-                continue;
+                return self.fast(last);
             };
             let node = self.cx.pool.get(n);
             if node.removed || node.stamp != stamp || !self.is_ear(n) {
@@ -315,7 +323,7 @@ impl<'a> Clipper<'a> {
 
     /// The last triangle, when it has area.
     fn finish(&mut self, n: NodeId) {
-        if self.len == 3 {
+        if self.len == 3 && !self.cx.pool.get(n).removed {
             let (a, c) = (self.cx.pool.prev(n), self.cx.pool.next(n));
             if orient2d(self.cx.pool.p(a), self.cx.pool.p(n), self.cx.pool.p(c)) == Orientation::CounterClockwise {
                 self.emit(a, n, c);
@@ -324,7 +332,9 @@ impl<'a> Clipper<'a> {
     }
 
     /// No ear in a whole lap. A ring enclosing no area is done; otherwise the input was not
-    /// valid: strict mode gives up, lenient mode cuts the best triangle it can.
+    /// valid: strict mode gives up; lenient mode, like earcut, first cures local
+    /// self-intersections, then splits the ring along a diagonal, and only then cuts the
+    /// best triangle it can. Returns a live node to go on from (`len` is 0 when done).
     fn stuck(&mut self, at: NodeId) -> Result<NodeId, Error> {
         let mut n = at;
         let mut convex = None;
@@ -341,22 +351,122 @@ impl<'a> Clipper<'a> {
         let Some(convex) = convex else {
             // all straight or reflex: no area left (a counter-clockwise ring with area has
             // a left turn), so this piece is done
-            if self.cx.lenient && self.len > 2 {
-                let ring = self.cx.pool.get(at).ring;
-                let input = self.cx.rings[ring as usize].input;
-                self.cx.repair(RepairKind::DegeneratePiece, input, self.cx.pool.get(at).vertex);
-            }
+            self.note(RepairKind::DegeneratePiece, at);
             self.len = 0;
             return Ok(at);
         };
         if !self.cx.lenient {
             return Err(Error::Internal { stage: "clip" });
         }
+        if let Some(n) = self.cure_local_intersections(at) {
+            return Ok(n);
+        }
+        if self.split(at) {
+            self.len = 0;
+            return Ok(at);
+        }
         let tip = relaxed.unwrap_or(convex);
-        let ring = self.cx.pool.get(tip).ring;
-        let input = self.cx.rings[ring as usize].input;
-        self.cx.repair(RepairKind::ForcedEar, input, self.cx.pool.get(tip).vertex);
+        self.note(RepairKind::ForcedEar, tip);
         Ok(self.cut(tip))
+    }
+
+    /// Records a lenient repair at node `n`.
+    fn note(&mut self, kind: RepairKind, n: NodeId) {
+        if self.cx.lenient {
+            let node = self.cx.pool.get(n);
+            let input = self.cx.rings[node.ring as usize].input;
+            let vertex = node.vertex;
+            self.cx.repair(kind, input, vertex);
+        }
+    }
+
+    /// earcut's `cureLocalIntersections`: where edge a → p crosses edge q → b two steps
+    /// on (a self-intersection as in a bow tie), cut triangle a, p, b and drop p and q.
+    /// Returns a node to go on from when anything was cured.
+    fn cure_local_intersections(&mut self, start: NodeId) -> Option<NodeId> {
+        let mut p = start;
+        let mut cured = None;
+        for _ in 0..self.len {
+            if self.len <= 3 {
+                break;
+            }
+            let pool = &self.cx.pool;
+            let (a, q) = (pool.prev(p), pool.next(p));
+            let b = pool.next(q);
+            let (pa, pp, pq, pb) = (pool.p(a), pool.p(p), pool.p(q), pool.p(b));
+            if pa != pb && crosses(pa, pp, pq, pb) && sees(pool, a, pb) && sees(pool, b, pa) {
+                match orient2d(pa, pp, pb) {
+                    Orientation::CounterClockwise => self.emit(a, p, b),
+                    Orientation::Clockwise => self.emit(a, b, p),
+                    Orientation::Collinear => {}
+                }
+                self.note(RepairKind::ForcedEar, p);
+                self.unlink(p);
+                self.unlink(q);
+                self.tidy(a);
+                self.tidy(b);
+                cured = Some(if self.cx.pool.get(b).removed { a } else { b });
+                p = cured.unwrap_or(a);
+            }
+            p = self.cx.pool.next(p);
+        }
+        cured
+    }
+
+    /// earcut's `splitEarcut`: find a diagonal a–b that crosses no edge and leaves both
+    /// ends inwards, split the ring there and queue both halves. The search is quadratic
+    /// in candidates and linear per check, so it stops after a fixed budget of edge tests
+    /// (the forced ear takes over then).
+    fn split(&mut self, start: NodeId) -> bool {
+        const BUDGET: usize = 1 << 22;
+        let mut budget = BUDGET;
+        let mut a = start;
+        for _ in 0..self.len {
+            let pool = &self.cx.pool;
+            let mut b = pool.next(pool.next(a));
+            while b != pool.prev(a) {
+                if budget < self.len {
+                    return false;
+                }
+                budget -= self.len;
+                if self.valid_diagonal(a, b) {
+                    let c = self.cx.pool.split(a, b);
+                    self.note(RepairKind::ForcedEar, a);
+                    self.cx.clip.pending.push(a);
+                    self.cx.clip.pending.push(c);
+                    return true;
+                }
+                b = self.cx.pool.next(b);
+            }
+            a = self.cx.pool.next(a);
+        }
+        false
+    }
+
+    /// A diagonal a–b between distinct positions that leaves both ends inwards and crosses
+    /// or touches no edge of the ring.
+    fn valid_diagonal(&self, a: NodeId, b: NodeId) -> bool {
+        let pool = &self.cx.pool;
+        let (pa, pb) = (pool.p(a), pool.p(b));
+        if pa == pb || !sees(pool, a, pb) || !sees(pool, b, pa) {
+            return false;
+        }
+        let mut e = a;
+        loop {
+            let f = pool.next(e);
+            let (pe, pf) = (pool.p(e), pool.p(f));
+            // edges at a or b may touch the diagonal at its ends only
+            if pe != pa && pe != pb && pf != pa && pf != pb && segments_meet(pa, pb, pe, pf) {
+                return false;
+            }
+            if (pe == pa || pe == pb || pf == pa || pf == pb) && overlaps(pa, pb, pe, pf) {
+                return false;
+            }
+            e = f;
+            if e == a {
+                return true;
+            }
+        }
     }
 
     /// Lenient fallback test: some reflex vertex strictly inside the triangle at `ear`.
@@ -398,6 +508,46 @@ fn remove_walls(cx: &mut Context, start: NodeId) -> NodeId {
             n = next;
         }
     }
+}
+
+/// Whether the direction from node `n` towards `q` leaves `n` into the polygon (strictly
+/// inside its corner, or along one of its sides).
+fn sees(pool: &crate::pool::Pool, n: NodeId, q: Point) -> bool {
+    let o = pool.p(n);
+    corner_contains(o, pool.p(pool.next(n)), pool.p(pool.prev(n)), q) != Some(false)
+}
+
+/// Whether segments a–b and c–d cross at a point interior to both.
+fn crosses(a: Point, b: Point, c: Point, d: Point) -> bool {
+    use Orientation::*;
+    let (o1, o2) = (orient2d(a, b, c), orient2d(a, b, d));
+    let (o3, o4) = (orient2d(c, d, a), orient2d(c, d, b));
+    o1 != Collinear && o2 != Collinear && o1 != o2 && o3 != Collinear && o4 != Collinear && o3 != o4
+}
+
+/// Whether closed segments a–b and c–d have a point in common.
+fn segments_meet(a: Point, b: Point, c: Point, d: Point) -> bool {
+    use Orientation::*;
+    let (o1, o2) = (orient2d(a, b, c), orient2d(a, b, d));
+    let (o3, o4) = (orient2d(c, d, a), orient2d(c, d, b));
+    if o1 != o2 && o3 != o4 && o1 != Collinear && o2 != Collinear && o3 != Collinear && o4 != Collinear {
+        return true;
+    }
+    (o1 == Collinear && within_box(a, b, c))
+        || (o2 == Collinear && within_box(a, b, d))
+        || (o3 == Collinear && within_box(c, d, a))
+        || (o4 == Collinear && within_box(c, d, b))
+        || (o1 != Collinear && o2 != Collinear && o1 != o2 && o3 != o4)
+}
+
+/// For segments sharing an endpoint: whether they run along each other for a while.
+fn overlaps(a: Point, b: Point, c: Point, d: Point) -> bool {
+    orient2d(a, b, c) == Orientation::Collinear
+        && orient2d(a, b, d) == Orientation::Collinear
+        && ((c != a && c != b && within_box(a, b, c))
+            || (d != a && d != b && within_box(a, b, d))
+            || (a != c && a != d && within_box(c, d, a))
+            || (b != c && b != d && within_box(c, d, b)))
 }
 
 /// The turn prev(n) → n → next(n).

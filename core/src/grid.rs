@@ -11,7 +11,8 @@
 use crate::pool::NodeId;
 use crate::predicates::Point;
 
-/// Edges spanning more bands than this are kept in the `long` list instead.
+/// Edges spanning more bands than this (or a sixteenth of all bands, if more) are kept in
+/// the `long` list instead.
 const MAX_SPAN: usize = 32;
 
 /// The band index (see the module docs).
@@ -20,19 +21,26 @@ pub(crate) struct Bands {
     y0: f64,
     scale: f64,
     count: usize,
+    /// Edges spanning more bands than this go to `long`.
+    max_span: usize,
     lists: Vec<Vec<NodeId>>,
     long: Vec<NodeId>,
 }
 
 impl Bands {
-    /// Empties the index and sizes it for `edges` edges with y in `ymin..=ymax`.
-    pub fn reset(&mut self, ymin: f64, ymax: f64, edges: usize) {
-        let count = (edges / 4).clamp(1, 1 << 16);
+    /// Empties the index and sizes it for `edges` edges with y in `ymin..=ymax` whose
+    /// heights sum to `total_dy`: bands about as tall as an average edge, so an edge is
+    /// listed about twice and a band holds a handful of edges.
+    pub fn reset(&mut self, ymin: f64, ymax: f64, edges: usize, total_dy: f64) {
         let height = ymax - ymin;
+        let mean_dy = total_dy / edges.max(1) as f64;
+        let wanted = (height / mean_dy).min((edges / 2) as f64).min((1 << 20) as f64);
+        let count = if wanted.is_finite() && wanted >= 1.0 { wanted as usize } else { 1 };
         let scale = count as f64 / height;
         self.y0 = ymin;
         self.scale = if scale.is_finite() && height > 0.0 { scale } else { 0.0 };
         self.count = count;
+        self.max_span = MAX_SPAN.max(count / 16);
         if self.lists.len() < count {
             self.lists.resize_with(count, Vec::new);
         }
@@ -56,7 +64,7 @@ impl Bands {
             return;
         }
         let (lo, hi) = (self.band(a.y.min(b.y)), self.band(a.y.max(b.y)));
-        if hi - lo >= MAX_SPAN {
+        if hi - lo >= self.max_span {
             self.long.push(n);
         } else {
             for list in &mut self.lists[lo..=hi] {
@@ -81,7 +89,7 @@ mod tests {
     #[test]
     fn finds_edges_by_y_range() {
         let mut bands = Bands::default();
-        bands.reset(0.0, 100.0, 400);
+        bands.reset(0.0, 100.0, 400, 400.0);
         bands.insert(NodeId(1), Point::new(0., 10.), Point::new(5., 12.));
         bands.insert(NodeId(2), Point::new(0., 50.), Point::new(5., 40.));
         bands.insert(NodeId(3), Point::new(0., 0.), Point::new(0., 100.)); // long
@@ -96,10 +104,10 @@ mod tests {
     #[test]
     fn flat_and_huge_ranges_stay_in_bounds() {
         let mut bands = Bands::default();
-        bands.reset(5.0, 5.0, 100);
+        bands.reset(5.0, 5.0, 100, 0.0);
         bands.insert(NodeId(0), Point::new(0., 5.), Point::new(1., 5.));
         assert_eq!(bands.query(5.0, 5.0).count(), 1);
-        bands.reset(-f64::MAX, f64::MAX, 100);
+        bands.reset(-f64::MAX, f64::MAX, 100, f64::MAX);
         bands.insert(NodeId(0), Point::new(0., -f64::MAX), Point::new(1., f64::MAX));
         assert_eq!(bands.query(0.0, 0.0).count(), 1);
     }

@@ -24,7 +24,8 @@
 //! # }
 //! ```
 //!
-//! The pipeline, one module per stage: `load` → `clean` → `nest` → `bridge` → `clip`.
+//! The pipeline, one module per stage: `load` → `clean` → `nest` (and `touch`) → `bridge` →
+//! `clip`.
 //! See `DESIGN.md` in the repository.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
@@ -40,6 +41,7 @@ mod options;
 mod pool;
 mod predicates;
 mod report;
+mod touch;
 mod triangulator;
 mod validate;
 

@@ -21,23 +21,21 @@ use crate::report::{DropReason, Dropped, RepairKind};
 use crate::triangulator::Context;
 use crate::{Error, Nesting};
 
-/// Decides every live ring's depth, turns holes clockwise; returns the number of holes.
-pub(crate) fn nest(cx: &mut Context, nesting: Nesting) -> Result<usize, Error> {
+/// Decides every live ring's depth and turns holes clockwise.
+pub(crate) fn nest(cx: &mut Context, nesting: Nesting) -> Result<(), Error> {
     let alive = cx.rings.iter().filter(|r| r.alive).count();
     match nesting {
         Nesting::Auto if alive > 1 => compute_depths(cx)?,
         Nesting::Auto => {}
         Nesting::FirstIsOuter => first_is_outer(cx)?,
     }
-    let mut holes = 0;
     for r in 0..cx.rings.len() {
         let ring = cx.rings[r];
         if ring.alive && ring.depth % 2 == 1 {
             cx.pool.reverse(ring.start);
-            holes += 1;
         }
     }
-    Ok(holes)
+    Ok(())
 }
 
 /// earcut's convention; in strict mode, checked against the computed depths.
@@ -99,16 +97,17 @@ fn compute_depths(cx: &mut Context) -> Result<(), Error> {
 
 /// Lists every live edge in the band index.
 pub(crate) fn index_all_edges(cx: &mut Context) {
-    let (mut ymin, mut ymax, mut edges) = (f64::INFINITY, f64::NEG_INFINITY, 0);
+    let (mut ymin, mut ymax, mut edges, mut total_dy) = (f64::INFINITY, f64::NEG_INFINITY, 0, 0.0);
     for ring in cx.rings.iter().filter(|r| r.alive) {
         for n in cx.pool.ring(ring.start) {
-            let y = cx.pool.p(n).y;
+            let (y, y_next) = (cx.pool.p(n).y, cx.pool.p(cx.pool.next(n)).y);
             ymin = ymin.min(y);
             ymax = ymax.max(y);
+            total_dy += (y_next - y).abs();
             edges += 1;
         }
     }
-    cx.bands.reset(ymin, ymax, edges);
+    cx.bands.reset(ymin, ymax, edges, total_dy);
     for ring in cx.rings.iter().filter(|r| r.alive) {
         for n in cx.pool.ring(ring.start) {
             cx.bands.insert(n, cx.pool.p(n), cx.pool.p(cx.pool.next(n)));

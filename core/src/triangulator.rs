@@ -7,7 +7,7 @@ use crate::grid::Bands;
 use crate::pool::{NodeId, Pool};
 use crate::report::{Dropped, Repair, RepairKind, Report};
 use crate::validate::SweepScratch;
-use crate::{bridge, clean, clip, load, nest, validate, Error, Options};
+use crate::{bridge, clean, clip, load, nest, touch, validate, Error, Options};
 
 /// A coordinate type the triangulator accepts: `f32` or `f64`.
 ///
@@ -72,6 +72,10 @@ pub(crate) struct Context {
     pub order: Vec<u32>,
     pub starts: Vec<NodeId>,
     pub touches: Vec<validate::Touch>,
+    /// Nodes at positions held by several nodes, sorted by position (see `touch`).
+    pub shared: Vec<NodeId>,
+    /// Scratch of `touch`: the new successor of each node of one shared position.
+    pub relink: Vec<(NodeId, NodeId)>,
     pub crossings: Vec<validate::Crossing>,
     pub sweep: SweepScratch,
     pub bands: Bands,
@@ -157,7 +161,8 @@ impl<T: Coord> Triangulator<T> {
         cx.reset(options.lenient);
         load::load(cx, vertices, ring_starts)?;
         clean::clean(cx)?;
-        let holes = nest::nest(cx, options.nesting)?;
+        nest::nest(cx, options.nesting)?;
+        let holes = touch::join(cx);
         bridge::bridge(cx)?;
         let polygons = clip::clip(cx, options.strategy, out)?;
         Ok(Report {

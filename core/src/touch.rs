@@ -1,0 +1,161 @@
+//! Stage 3b, *touch*: join rings properly where they touch.
+//!
+//! Rings may touch at vertices (clean turned every touch into shared vertices). Bridging
+//! and clipping need every polygon boundary to be weakly simple: where a boundary passes a
+//! position several times, its corners there must not overlap. A hole touching its outer
+//! ring, or another hole, away from the bridge would break that. So at every shared
+//! position the edges are re-linked as a planar face walk does: with every ring's interior
+//! on its left (nest made it so), an edge arriving at X continues along the first edge
+//! leaving X clockwise from the way it came. Rings touching there become one ring (a
+//! zero-length bridge), and a ring touching itself splits into two.
+//!
+//! Afterwards the rings are traced again. Each is either the outer boundary of a polygon
+//! (its interior on the inside) or a hole boundary (its polygon around it); which one is
+//! read at its rightmost-lowest position: a hole's boundary turns clockwise there at one
+//! of its visits, an outer boundary never does.
+
+use crate::nest::same_ray;
+use crate::pool::NodeId;
+use crate::predicates::{orient2d, Orientation, Point};
+use crate::triangulator::{Context, Ring};
+
+/// Re-links every shared position and re-traces the rings; returns the number of holes.
+pub(crate) fn join(cx: &mut Context) -> usize {
+    if !cx.shared.is_empty() {
+        let mut i = 0;
+        while i < cx.shared.len() {
+            let p = cx.pool.p(cx.shared[i]);
+            let mut j = i + 1;
+            while j < cx.shared.len() && cx.pool.p(cx.shared[j]) == p {
+                j += 1;
+            }
+            relink(cx, i, j);
+            i = j;
+        }
+        retrace(cx);
+    }
+    cx.rings.iter().filter(|r| r.alive && r.depth % 2 == 1).count()
+}
+
+/// Whether node `n` is part of the triangulation's input still.
+fn live(cx: &Context, n: NodeId) -> bool {
+    let node = cx.pool.get(n);
+    !node.removed && cx.rings[node.ring as usize].alive
+}
+
+/// Re-links the nodes `cx.shared[i..j]`, all at one position, by the face-walk rule.
+/// Leaves them as they are when the rule does not give a one-to-one pairing (only for
+/// invalid, lenient input).
+fn relink(cx: &mut Context, i: usize, j: usize) {
+    cx.relink.clear();
+    let o = cx.pool.p(cx.shared[i]);
+    for a in i..j {
+        let n = cx.shared[a];
+        if !live(cx, n) {
+            continue;
+        }
+        let back = cx.pool.p(cx.pool.prev(n));
+        let mut best: Option<NodeId> = None;
+        for b in i..j {
+            let m = cx.shared[b];
+            if !live(cx, m) {
+                continue;
+            }
+            let q = cx.pool.next(m);
+            best = match best {
+                Some(c) if !clockwise_before(o, back, cx.pool.p(q), cx.pool.p(c)) => Some(c),
+                _ => Some(q),
+            };
+        }
+        if let Some(target) = best {
+            cx.relink.push((n, target));
+        }
+    }
+    // one-to-one? every successor used once
+    let pairs = &mut cx.relink;
+    pairs.sort_unstable_by_key(|&(_, t)| t);
+    if pairs.windows(2).any(|w| w[0].1 == w[1].1) {
+        return;
+    }
+    for k in 0..cx.relink.len() {
+        let (n, target) = cx.relink[k];
+        cx.pool.get_mut(n).next = target;
+        cx.pool.get_mut(target).prev = n;
+        cx.pool.touch(n);
+    }
+}
+
+/// Rotating clockwise around `o` from the direction towards `back`: whether the direction
+/// towards `u` comes strictly before the direction towards `w`. The direction of `back`
+/// itself comes last (an edge straight back is the other side of a zero-width wall).
+fn clockwise_before(o: Point, back: Point, u: Point, w: Point) -> bool {
+    let (ru, rw) = (rank(o, back, u), rank(o, back, w));
+    if ru != rw {
+        return ru < rw;
+    }
+    // same half-plane: u first when w lies clockwise of it
+    (ru == 0 || ru == 2) && orient2d(o, u, w) == Orientation::Clockwise
+}
+
+/// Half-plane of the direction towards `q` seen clockwise from the direction towards
+/// `back`: 0 right, 1 straight opposite, 2 left, 3 along it.
+fn rank(o: Point, back: Point, q: Point) -> u8 {
+    match orient2d(o, back, q) {
+        Orientation::Clockwise => 0,
+        Orientation::CounterClockwise => 2,
+        Orientation::Collinear if same_ray(o, back, q) => 3,
+        Orientation::Collinear => 1,
+    }
+}
+
+/// Traces the rings again after re-linking: each cycle becomes a ring of its own, an outer
+/// boundary (depth 0) or a hole (depth 1). The old ring entries stay, dead, for reporting.
+fn retrace(cx: &mut Context) {
+    let old = cx.rings.len();
+    for k in 0..cx.pool.len() {
+        let n = NodeId(k as u32);
+        let ring = cx.pool.get(n).ring as usize;
+        if ring >= old || !live(cx, n) {
+            continue;
+        }
+        let index = cx.rings.len() as u32;
+        let input = cx.rings[ring].input;
+        let (mut len, mut rightmost, mut hole) = (0, n, false);
+        let mut m = n;
+        loop {
+            cx.pool.get_mut(m).ring = index;
+            len += 1;
+            let (p, best) = (cx.pool.p(m), cx.pool.p(rightmost));
+            let cw = turn(cx, m) == Orientation::Clockwise;
+            if p.x > best.x || (p.x == best.x && p.y < best.y) {
+                (rightmost, hole) = (m, cw);
+            } else if p == best && cw && !hole {
+                // a clockwise visit is the hole's M: the ray leaves from its corner
+                (rightmost, hole) = (m, true);
+            }
+            m = cx.pool.next(m);
+            if m == n {
+                break;
+            }
+        }
+        cx.rings.push(Ring {
+            input,
+            start: n,
+            len,
+            rightmost,
+            depth: u32::from(hole),
+            alive: true,
+            merged: false,
+            component: index,
+        });
+    }
+    for ring in &mut cx.rings[..old] {
+        ring.alive = false;
+    }
+}
+
+/// The turn prev(n) → n → next(n).
+fn turn(cx: &Context, n: NodeId) -> Orientation {
+    let pool = &cx.pool;
+    orient2d(pool.p(pool.prev(n)), pool.p(n), pool.p(pool.next(n)))
+}

@@ -7,7 +7,9 @@
 //! position the edges are re-linked as a planar face walk does: with every ring's interior
 //! on its left (nest made it so), an edge arriving at X continues along the first edge
 //! leaving X clockwise from the way it came. Rings touching there become one ring (a
-//! zero-length bridge), and a ring touching itself splits into two.
+//! zero-length bridge), a ring touching itself splits into two, and edges running both
+//! ways along one segment (a hole sharing an edge with its outer ring) pair up into
+//! zero-width rings that enclose nothing.
 //!
 //! Afterwards the rings are traced again. Each is either the outer boundary of a polygon
 //! (its interior on the inside) or a hole boundary (its polygon around it); which one is
@@ -86,25 +88,26 @@ fn relink(cx: &mut Context, i: usize, j: usize) {
 }
 
 /// Rotating clockwise around `o` from the direction towards `back`: whether the direction
-/// towards `u` comes strictly before the direction towards `w`. The direction of `back`
-/// itself comes last (an edge straight back is the other side of a zero-width wall).
+/// towards `u` comes strictly before the direction towards `w`. An edge straight back comes
+/// first: with the arriving edge it forms a zero-width wall (a hole sharing an edge with its
+/// outer ring, say), enclosing nothing, which becomes a ring of its own and vanishes.
 fn clockwise_before(o: Point, back: Point, u: Point, w: Point) -> bool {
     let (ru, rw) = (rank(o, back, u), rank(o, back, w));
     if ru != rw {
         return ru < rw;
     }
     // same half-plane: u first when w lies clockwise of it
-    (ru == 0 || ru == 2) && orient2d(o, u, w) == Orientation::Clockwise
+    (ru == 1 || ru == 3) && orient2d(o, u, w) == Orientation::Clockwise
 }
 
-/// Half-plane of the direction towards `q` seen clockwise from the direction towards
-/// `back`: 0 right, 1 straight opposite, 2 left, 3 along it.
+/// Where the direction towards `q` lies, seen clockwise from the direction towards `back`:
+/// 0 along it, 1 right of it, 2 straight opposite, 3 left of it.
 fn rank(o: Point, back: Point, q: Point) -> u8 {
     match orient2d(o, back, q) {
-        Orientation::Clockwise => 0,
-        Orientation::CounterClockwise => 2,
-        Orientation::Collinear if same_ray(o, back, q) => 3,
-        Orientation::Collinear => 1,
+        Orientation::Collinear if same_ray(o, back, q) => 0,
+        Orientation::Clockwise => 1,
+        Orientation::Collinear => 2,
+        Orientation::CounterClockwise => 3,
     }
 }
 

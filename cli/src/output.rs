@@ -1,0 +1,265 @@
+//! Writing a triangulation: result JSON (DESIGN.md, "Formats") or an SVG picture.
+
+use std::io::{self, Write};
+
+use serde::Serialize;
+
+use crate::layout::Layout;
+
+/// DESIGN.md's result JSON: `{"vertices": [[x, y], …], "triangles": [[a, b, c], …]}`.
+#[derive(Serialize)]
+struct ResultJson<'a> {
+    vertices: &'a [[f64; 2]],
+    triangles: &'a [[u32; 3]],
+}
+
+/// Writes the result JSON on one line, then a newline.
+///
+/// Vertices are written as parsed (a non-finite one, only possible with `--lenient` from
+/// WKT or the f32 conversion, becomes `null`, as JSON has no NaN).
+pub fn write_json<W: Write>(
+    mut w: W,
+    vertices: &[[f64; 2]],
+    triangles: &[[u32; 3]],
+) -> io::Result<()> {
+    serde_json::to_writer(
+        &mut w,
+        &ResultJson {
+            vertices,
+            triangles,
+        },
+    )
+    .map_err(io::Error::from)?;
+    w.write_all(b"\n")?;
+    w.flush()
+}
+
+/// The canvas is this many user units across its longer side, whatever the input's scale:
+/// stroke widths and dot sizes are then constants, and coordinates stay small numbers that
+/// SVG renderers (often single precision) draw without jitter.
+const CANVAS: f64 = 1000.0;
+/// Blank border around the drawing, in canvas units.
+const MARGIN: f64 = 20.0;
+
+/// The drawing's style. `non-scaling-stroke` keeps lines thin when zooming into a large
+/// mesh; where it is not supported, the widths are still right at the default size,
+/// because the canvas is about as many units as the picture is pixels.
+const STYLE: &str = "\
+.tri{fill:#cfe0f7;fill-opacity:.75;stroke:#4a6fa5;stroke-width:.5;stroke-linejoin:round;vector-effect:non-scaling-stroke}
+.outer{fill:none;stroke:#111;stroke-width:1.8;stroke-linejoin:round;vector-effect:non-scaling-stroke}
+.hole{fill:none;stroke:#c0392b;stroke-width:1.8;stroke-dasharray:6 3;stroke-linejoin:round;vector-effect:non-scaling-stroke}
+.dropped{fill:#e67e22}";
+
+/// Maps input coordinates (y up, any scale) to canvas coordinates (y down, 0..CANVAS).
+struct Frame {
+    min_x: f64,
+    max_y: f64,
+    /// Canvas units per half input unit: half, so spans between ±f64::MAX do not overflow.
+    scale: f64,
+    width: f64,
+    height: f64,
+}
+
+impl Frame {
+    fn fit(vertices: &[[f64; 2]]) -> Frame {
+        let finite = vertices
+            .iter()
+            .filter(|v| v[0].is_finite() && v[1].is_finite());
+        let (mut min_x, mut min_y, mut max_x, mut max_y) = (f64::MAX, f64::MAX, f64::MIN, f64::MIN);
+        for v in finite {
+            min_x = min_x.min(v[0]);
+            max_x = max_x.max(v[0]);
+            min_y = min_y.min(v[1]);
+            max_y = max_y.max(v[1]);
+        }
+        if min_x > max_x {
+            // Nothing to draw: an empty unit frame.
+            (min_x, min_y, max_x, max_y) = (0.0, 0.0, 1.0, 1.0);
+        }
+        let half_w = max_x / 2.0 - min_x / 2.0;
+        let half_h = max_y / 2.0 - min_y / 2.0;
+        let half_span = half_w.max(half_h);
+        // A single point or a zero-area line still gets a finite scale.
+        let scale = if half_span > 0.0 {
+            CANVAS / half_span
+        } else {
+            1.0
+        };
+        Frame {
+            min_x,
+            max_y,
+            scale,
+            width: half_w * scale,
+            height: half_h * scale,
+        }
+    }
+
+    fn map(&self, v: [f64; 2]) -> Option<(f64, f64)> {
+        let x = (v[0] / 2.0 - self.min_x / 2.0) * self.scale;
+        let y = (self.max_y / 2.0 - v[1] / 2.0) * self.scale;
+        (x.is_finite() && y.is_finite()).then_some((x, y))
+    }
+}
+
+/// A number with at most two decimals and no trailing zeros: 1/100 of a canvas unit is
+/// 1/100,000 of the drawing, finer than any screen.
+fn num(value: f64) -> String {
+    let s = format!("{value:.2}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" {
+        "0".to_owned()
+    } else {
+        s.to_owned()
+    }
+}
+
+/// Writes an SVG picture: the triangles (light fill, thin strokes), the file's rings on
+/// top (outer boundaries solid, holes dashed red), and dropped vertices as orange dots.
+///
+/// Points that are not finite are left out of the picture.
+pub fn write_svg<W: Write>(
+    mut w: W,
+    layout: &Layout,
+    triangles: &[[u32; 3]],
+    dropped: &[usize],
+) -> io::Result<()> {
+    let frame = Frame::fit(&layout.vertices);
+    let point = |i: usize| layout.vertices.get(i).and_then(|&v| frame.map(v));
+    let (w_box, h_box) = (frame.width + 2.0 * MARGIN, frame.height + 2.0 * MARGIN);
+    writeln!(
+        w,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" viewBox="{} {} {} {}" width="{}" height="{}">"#,
+        num(-MARGIN),
+        num(-MARGIN),
+        num(w_box),
+        num(h_box),
+        num(w_box),
+        num(h_box)
+    )?;
+    writeln!(w, "<title>polytri: {} triangles</title>", triangles.len())?;
+    writeln!(w, "<style>\n{STYLE}\n</style>")?;
+
+    writeln!(w, r#"<g class="triangles">"#)?;
+    for t in triangles {
+        let corners = [
+            point(t[0] as usize),
+            point(t[1] as usize),
+            point(t[2] as usize),
+        ];
+        if let [Some(a), Some(b), Some(c)] = corners {
+            writeln!(
+                w,
+                r#"<polygon class="tri" points="{},{} {},{} {},{}"/>"#,
+                num(a.0),
+                num(a.1),
+                num(b.0),
+                num(b.1),
+                num(c.0),
+                num(c.1)
+            )?;
+        }
+    }
+    writeln!(w, "</g>")?;
+
+    writeln!(w, r#"<g class="rings">"#)?;
+    for (ring, origin) in layout.ring_origins.iter().enumerate() {
+        let mut d = String::new();
+        for (k, (x, y)) in layout.ring_vertices(ring).filter_map(point).enumerate() {
+            d.push_str(if k == 0 { "M" } else { " L" });
+            d.push_str(&num(x));
+            d.push(' ');
+            d.push_str(&num(y));
+        }
+        if !d.is_empty() {
+            let class = if origin.is_hole() { "hole" } else { "outer" };
+            writeln!(w, r#"<path class="{class}" d="{d} Z"/>"#)?;
+        }
+    }
+    writeln!(w, "</g>")?;
+
+    if !dropped.is_empty() {
+        writeln!(w, r#"<g class="dropped">"#)?;
+        for (x, y) in dropped.iter().filter_map(|&i| point(i)) {
+            writeln!(w, r#"<circle cx="{}" cy="{}" r="3"/>"#, num(x), num(y))?;
+        }
+        writeln!(w, "</g>")?;
+    }
+    writeln!(w, "</svg>")?;
+    w.flush()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn json_has_the_documented_shape() {
+        let mut out = Vec::new();
+        write_json(
+            &mut out,
+            &[[0.0, 0.0], [1.5, 0.0], [1.0, f64::NAN]],
+            &[[0, 1, 2]],
+        )
+        .expect("in memory");
+        let text = String::from_utf8(out).expect("utf-8");
+        assert_eq!(
+            text,
+            "{\"vertices\":[[0.0,0.0],[1.5,0.0],[1.0,null]],\"triangles\":[[0,1,2]]}\n"
+        );
+    }
+
+    #[test]
+    fn numbers_are_short() {
+        assert_eq!(num(12.0), "12");
+        assert_eq!(num(12.5), "12.5");
+        assert_eq!(num(0.123_456), "0.12");
+        assert_eq!(num(-0.001), "0");
+        assert_eq!(num(-20.0), "-20");
+    }
+
+    #[test]
+    fn frame_flips_y_and_fits_any_scale() {
+        for scale in [1e-9, 1.0, 1e9, 1e300] {
+            let frame = Frame::fit(&[[0.0, 0.0], [2.0 * scale, scale]]);
+            let (x0, y0) = frame.map([0.0, 0.0]).expect("finite");
+            let (x1, y1) = frame.map([2.0 * scale, scale]).expect("finite");
+            assert!(
+                (x0 - 0.0).abs() < 1e-9 && (y0 - 500.0).abs() < 1e-6,
+                "{scale}: {x0} {y0}"
+            );
+            assert!(
+                (x1 - 1000.0).abs() < 1e-6 && y1.abs() < 1e-6,
+                "{scale}: {x1} {y1}"
+            );
+        }
+        let frame = Frame::fit(&[[-f64::MAX, -f64::MAX], [f64::MAX, f64::MAX]]);
+        assert!(frame.map([f64::MAX, 0.0]).is_some());
+        let frame = Frame::fit(&[[3.0, 3.0], [f64::NAN, 1.0]]);
+        assert!(frame.scale.is_finite());
+        assert!(Frame::fit(&[]).scale.is_finite());
+    }
+
+    #[test]
+    fn svg_draws_triangles_rings_and_dropped_points() {
+        let polygons = vec![vec![
+            vec![[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]],
+            vec![[3.0, 3.0], [3.0, 7.0], [7.0, 7.0], [7.0, 3.0]],
+        ]];
+        let layout = Layout::new(&polygons);
+        let mut out = Vec::new();
+        write_svg(&mut out, &layout, &[[0, 1, 4], [9, 9, 9]], &[5]).expect("in memory");
+        let text = String::from_utf8(out).expect("utf-8");
+        assert!(text.starts_with("<svg "), "{text}");
+        assert!(text.trim_end().ends_with("</svg>"));
+        // The out-of-range triangle is left out, not a panic.
+        assert_eq!(text.matches("<polygon ").count(), 1);
+        assert_eq!(text.matches(r#"<path class="outer""#).count(), 1);
+        assert_eq!(text.matches(r#"<path class="hole""#).count(), 1);
+        assert_eq!(text.matches("<circle ").count(), 1);
+        // y is flipped: input (0, 0) is the canvas's bottom left.
+        assert!(
+            text.contains(r#"d="M0 1000 L1000 1000 L1000 0 L0 0 Z""#),
+            "{text}"
+        );
+    }
+}

@@ -1,0 +1,504 @@
+//! `polytri triangulate` end to end: the built binary on small files written per test.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use serde_json::Value;
+
+/// A fresh directory for one test, so tests running in parallel never share files.
+fn scratch(test: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("polytri-cli-{}-{test}", std::process::id()));
+    // Left over from an earlier run with the same pid: start clean.
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).expect("create scratch directory");
+    dir
+}
+
+fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
+    let path = dir.join(name);
+    fs::write(&path, text).expect("write fixture");
+    path
+}
+
+fn polytri(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_polytri"))
+        .args(args)
+        .output()
+        .expect("run polytri")
+}
+
+/// Runs `polytri triangulate FILE EXTRA…`, expects success and returns the result JSON
+/// and stderr.
+fn triangulate(file: &Path, extra: &[&str]) -> (Value, String) {
+    let mut args = vec!["triangulate", file.to_str().expect("utf-8 path")];
+    args.extend_from_slice(extra);
+    let out = polytri(&args);
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert!(out.status.success(), "polytri {args:?} failed: {stderr}");
+    let json = serde_json::from_slice(&out.stdout).expect("stdout is JSON");
+    (json, stderr)
+}
+
+/// Runs `polytri triangulate FILE EXTRA…`, expects exit status 1 and returns the one line
+/// of stderr.
+fn refused(file: &Path, extra: &[&str]) -> String {
+    let mut args = vec!["triangulate", file.to_str().expect("utf-8 path")];
+    args.extend_from_slice(extra);
+    let out = polytri(&args);
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(out.status.code(), Some(1), "polytri {args:?}: {stderr}");
+    assert!(out.stdout.is_empty(), "no result on failure");
+    assert_eq!(stderr.lines().count(), 1, "one line: {stderr:?}");
+    assert!(stderr.starts_with("polytri: error: "), "{stderr}");
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    stderr
+}
+
+fn vertices(json: &Value) -> Vec<[f64; 2]> {
+    json["vertices"]
+        .as_array()
+        .expect("vertices array")
+        .iter()
+        .map(|v| [v[0].as_f64().expect("x"), v[1].as_f64().expect("y")])
+        .collect()
+}
+
+fn triangles(json: &Value) -> Vec<[usize; 3]> {
+    json["triangles"]
+        .as_array()
+        .expect("triangles array")
+        .iter()
+        .map(|t| {
+            let i = |k: usize| usize::try_from(t[k].as_u64().expect("index")).expect("fits");
+            [i(0), i(1), i(2)]
+        })
+        .collect()
+}
+
+/// Twice the signed area of a triangle: positive when counter-clockwise with y up.
+fn doubled_area(v: &[[f64; 2]], t: [usize; 3]) -> f64 {
+    let [a, b, c] = [v[t[0]], v[t[1]], v[t[2]]];
+    (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+}
+
+const SQUARE: &str = "[[[0,0],[10,0],[10,10],[0,10]]]";
+const SQUARE_WITH_HOLE: &str = "[[[0,0],[10,0],[10,10],[0,10]],[[3,3],[3,7],[7,7],[7,3]]]";
+
+#[test]
+fn rings_json_square() {
+    let dir = scratch("rings_json_square");
+    let (json, stderr) = triangulate(&write(&dir, "square.json", SQUARE), &[]);
+    assert_eq!(
+        vertices(&json),
+        vec![[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]]
+    );
+    let tris = triangles(&json);
+    assert_eq!(tris.len(), 2);
+    let v = vertices(&json);
+    assert!(
+        tris.iter().all(|&t| doubled_area(&v, t) > 0.0),
+        "counter-clockwise: {tris:?}"
+    );
+    assert_eq!(
+        stderr.trim(),
+        "polytri: square.json: 1 polygon, 0 holes, 2 triangles, 0 dropped vertices, 0 repairs"
+            .replace(
+                "square.json",
+                &dir.join("square.json").display().to_string()
+            )
+    );
+}
+
+#[test]
+fn rings_json_square_with_hole() {
+    let dir = scratch("rings_json_square_with_hole");
+    let file = write(&dir, "hole.json", SQUARE_WITH_HOLE);
+    for strategy in ["fast", "quality"] {
+        for nesting in ["auto", "first-outer"] {
+            let (json, stderr) =
+                triangulate(&file, &["--strategy", strategy, "--nesting", nesting]);
+            assert_eq!(vertices(&json).len(), 8);
+            assert_eq!(triangles(&json).len(), 8, "{strategy} {nesting}");
+            assert!(stderr.contains("1 hole,"), "{stderr}");
+        }
+    }
+}
+
+#[test]
+fn closing_point_is_dropped() {
+    let dir = scratch("closing_point_is_dropped");
+    let file = write(&dir, "closed.json", "[[[0,0],[10,0],[10,10],[0,10],[0,0]]]");
+    let (json, _) = triangulate(&file, &[]);
+    assert_eq!(vertices(&json).len(), 4, "closing point dropped");
+    assert_eq!(triangles(&json).len(), 2);
+    assert!(triangles(&json).iter().flatten().all(|&i| i < 4));
+}
+
+#[test]
+fn extra_coordinates_are_ignored() {
+    let dir = scratch("extra_coordinates_are_ignored");
+    let file = write(&dir, "z.json", "[[[0,0,5],[10,0,5],[10,10,5],[0,10,5]]]");
+    let (json, _) = triangulate(&file, &[]);
+    assert_eq!(vertices(&json)[2], [10.0, 10.0]);
+    assert_eq!(triangles(&json).len(), 2);
+}
+
+/// Two polygons, the second with a hole: every triangle must stay within one polygon's
+/// vertices, whether triangulated in one call (auto) or one call per polygon (offsets).
+#[test]
+fn shapes_json_triangulates_every_polygon_with_offsets() {
+    let dir = scratch("shapes_json_offsets");
+    let text = format!(
+        "[{SQUARE_WITH_HOLE}, [[[20,0],[30,0],[30,10],[20,10]]], \
+         [[[40,0],[50,0],[50,10],[40,10]],[[43,3],[43,7],[47,7],[47,3]]]]"
+    );
+    let file = write(&dir, "shapes.json", &text);
+    for nesting in ["auto", "first-outer"] {
+        let (json, stderr) = triangulate(&file, &["--nesting", nesting]);
+        let v = vertices(&json);
+        let tris = triangles(&json);
+        assert_eq!(v.len(), 8 + 4 + 8);
+        assert_eq!(tris.len(), 8 + 2 + 8, "{nesting}");
+        let polygon_of = |i: usize| match i {
+            0..=7 => 0,
+            8..=11 => 1,
+            _ => 2,
+        };
+        for t in &tris {
+            assert!(
+                t.iter().all(|&i| polygon_of(i) == polygon_of(t[0])),
+                "{nesting}: {t:?} spans polygons"
+            );
+            assert!(doubled_area(&v, *t) > 0.0);
+        }
+        for p in 0..3 {
+            assert!(
+                tris.iter().any(|t| polygon_of(t[0]) == p),
+                "{nesting}: polygon {p} has triangles"
+            );
+        }
+        assert!(
+            stderr.contains("3 polygons, 2 holes, 18 triangles"),
+            "{nesting}: {stderr}"
+        );
+    }
+}
+
+#[test]
+fn geojson_collections_and_skipped_geometries() {
+    let dir = scratch("geojson_collections");
+    let text = r#"{"type": "FeatureCollection", "features": [
+        {"type": "Feature", "properties": {"name": "hole"}, "geometry":
+            {"type": "Polygon", "coordinates": [
+                [[0,0],[10,0],[10,10],[0,10],[0,0]], [[3,3],[3,7],[7,7],[7,3],[3,3]]]}},
+        {"type": "Feature", "properties": {}, "geometry":
+            {"type": "MultiPolygon", "coordinates": [[[[20,0,1],[30,0,1],[30,10,1],[20,10,1],[20,0,1]]]]}},
+        {"type": "Feature", "properties": {}, "geometry": {"type": "Point", "coordinates": [1, 2]}}
+    ]}"#;
+    let (json, stderr) = triangulate(&write(&dir, "features.geojson", text), &[]);
+    assert_eq!(vertices(&json).len(), 12);
+    assert_eq!(triangles(&json).len(), 10);
+    assert!(
+        stderr.contains("warning") && stderr.contains("Point"),
+        "{stderr}"
+    );
+
+    let text = r#"{"type": "GeometryCollection", "geometries": [
+        {"type": "Polygon", "coordinates": [[[0,0],[10,0],[10,10],[0,10],[0,0]]]},
+        {"type": "LineString", "coordinates": [[0,0],[1,1]]}]}"#;
+    let (json, _) = triangulate(&write(&dir, "collection.json", text), &[]);
+    assert_eq!(triangles(&json).len(), 2);
+
+    let text = r#"{"type": "Feature", "properties": null, "geometry":
+        {"type": "Polygon", "coordinates": [[[0,0],[10,0],[10,10],[0,10],[0,0]]]}}"#;
+    let (json, _) = triangulate(&write(&dir, "feature.json", text), &[]);
+    assert_eq!(triangles(&json).len(), 2);
+}
+
+#[test]
+fn wkt_by_extension_and_by_content() {
+    let dir = scratch("wkt");
+    let text = "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (3 3, 3 7, 7 7, 7 3, 3 3))";
+    let (json, _) = triangulate(&write(&dir, "hole.wkt", text), &[]);
+    assert_eq!(vertices(&json).len(), 8);
+    assert_eq!(triangles(&json).len(), 8);
+
+    let text = "MULTIPOLYGON (((0 0, 10 0, 10 10, 0 10, 0 0)), ((20 0, 30 0, 30 10, 20 10, 20 0)))";
+    let (json, _) = triangulate(&write(&dir, "multi.txt", text), &[]);
+    assert_eq!(triangles(&json).len(), 4);
+
+    let text = "GEOMETRYCOLLECTION (POINT Z (1 2 3), POLYGON Z ((0 0 1, 10 0 1, 10 10 1, 0 0 1)))";
+    let (json, stderr) = triangulate(&write(&dir, "collection.wkt", text), &[]);
+    assert_eq!(vertices(&json), vec![[0.0, 0.0], [10.0, 0.0], [10.0, 10.0]]);
+    assert_eq!(triangles(&json).len(), 1);
+    assert!(stderr.contains("Point"), "{stderr}");
+}
+
+#[test]
+fn f32_precision_triangulates_and_keeps_the_parsed_vertices() {
+    let dir = scratch("f32");
+    let file = write(
+        &dir,
+        "hole.json",
+        "[[[0.1,0],[10,0],[10,10],[0,10]],[[3,3],[3,7],[7,7],[7,3]]]",
+    );
+    let (json, _) = triangulate(&file, &["--precision", "f32"]);
+    assert_eq!(triangles(&json).len(), 8);
+    // The output has the file's f64 value, not 0.1f32 widened.
+    assert_eq!(vertices(&json)[0], [0.1, 0.0]);
+
+    // Finite in f64, infinite in f32: refused with the reason.
+    let file = write(&dir, "huge.json", "[[[0,0],[1e300,0],[1,1]]]");
+    let message = refused(&file, &["--precision", "f32"]);
+    assert!(
+        message.contains("ring 0, vertex 1: coordinate out of f32 range"),
+        "{message}"
+    );
+}
+
+#[test]
+fn svg_output_to_a_file_and_to_stdout() {
+    let dir = scratch("svg");
+    let file = write(&dir, "hole.json", SQUARE_WITH_HOLE);
+    let svg = dir.join("out.svg");
+    let out = polytri(&[
+        "triangulate",
+        file.to_str().unwrap(),
+        "-o",
+        svg.to_str().unwrap(),
+        "--quiet",
+    ]);
+    assert!(out.status.success());
+    assert!(
+        out.stdout.is_empty() && out.stderr.is_empty(),
+        "quiet, result in the file"
+    );
+    let text = fs::read_to_string(&svg).expect("svg written");
+    assert!(text.starts_with("<svg "), "{text}");
+    assert!(text.trim_end().ends_with("</svg>"));
+    assert_eq!(
+        text.matches("<polygon ").count(),
+        8,
+        "one polygon per triangle"
+    );
+    assert_eq!(text.matches("<path class=\"outer\"").count(), 1);
+    assert_eq!(text.matches("<path class=\"hole\"").count(), 1);
+    assert_eq!(
+        text.matches('<').count(),
+        text.matches('>').count(),
+        "balanced tags"
+    );
+
+    let out = polytri(&["triangulate", file.to_str().unwrap(), "--format", "svg"]);
+    assert!(out.status.success());
+    assert!(String::from_utf8_lossy(&out.stdout).starts_with("<svg "));
+
+    // --format wins over the file name.
+    let json = dir.join("out2.svg");
+    let out = polytri(&[
+        "triangulate",
+        file.to_str().unwrap(),
+        "-o",
+        json.to_str().unwrap(),
+        "--format",
+        "json",
+    ]);
+    assert!(out.status.success());
+    assert!(fs::read_to_string(&json)
+        .expect("written")
+        .starts_with("{\"vertices\""));
+}
+
+#[test]
+fn shared_fixture_building_as_svg() {
+    let fixture = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../shared/fixtures/earcut/fixtures/building.json");
+    if !fixture.exists() {
+        eprintln!("skipped: {} is not here", fixture.display());
+        return;
+    }
+    let dir = scratch("building");
+    let svg = dir.join("building.svg");
+    let out = polytri(&[
+        "triangulate",
+        fixture.to_str().unwrap(),
+        "--format",
+        "svg",
+        "-o",
+        svg.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = fs::read_to_string(&svg).expect("svg written");
+    // 15 points, no holes: n - 2 triangles over the n vertices kept (earcut keeps a
+    // collinear one and makes 13; polytri may drop it, drawn as a dot).
+    let dropped = text.matches("<circle ").count();
+    assert_eq!(text.matches("<polygon ").count(), 15 - dropped - 2);
+    assert_eq!(text.matches("<path class=\"outer\"").count(), 1);
+}
+
+#[test]
+fn missing_file_is_one_line() {
+    let dir = scratch("missing");
+    let message = refused(&dir.join("no-such-file.json"), &[]);
+    assert!(
+        message.contains("no-such-file.json: cannot read"),
+        "{message}"
+    );
+}
+
+#[test]
+fn malformed_json_names_line_and_column() {
+    let dir = scratch("malformed");
+    let message = refused(&write(&dir, "bad.json", "[[[0,0],\n[1,0],,[1,1]]]"), &[]);
+    assert!(
+        message.contains("bad.json: invalid JSON") && message.contains("line 2 column"),
+        "{message}"
+    );
+
+    let message = refused(
+        &write(
+            &dir,
+            "string.geojson",
+            r#"{"type":"Polygon","coordinates":[[[0,0],[1,"NaN"],[1,1]]]}"#,
+        ),
+        &[],
+    );
+    assert!(
+        message.contains("invalid GeoJSON") && message.contains("column"),
+        "{message}"
+    );
+
+    let message = refused(&write(&dir, "short.json", "[[[0,0],[1],[1,1]]]"), &[]);
+    assert!(message.contains("invalid rings JSON"), "{message}");
+}
+
+#[test]
+fn nan_coordinates_are_refused() {
+    let dir = scratch("nan");
+    let message = refused(
+        &write(&dir, "nan.wkt", "POLYGON ((0 0, 10 0, nan 10, 0 0))"),
+        &[],
+    );
+    assert!(
+        message.contains("line 1, column 22: `nan` where a number belongs"),
+        "{message}"
+    );
+
+    // A sign makes the wkt crate read `-nan` as a number; then the triangulator refuses it.
+    let message = refused(
+        &write(&dir, "signed.wkt", "POLYGON ((0 0, 10 0, -nan 10, 0 10))"),
+        &[],
+    );
+    assert!(
+        message.contains("ring 0, vertex 2: coordinate is NaN or infinite"),
+        "{message}"
+    );
+}
+
+#[test]
+fn bow_tie_is_refused_strictly_and_repaired_leniently() {
+    let dir = scratch("bow_tie");
+    let file = write(&dir, "bowtie.json", "[[[0,0],[10,10],[10,0],[0,10]]]");
+    let message = refused(&file, &[]);
+    assert!(
+        message.contains("edges cross") && message.contains("ring 0, vertex"),
+        "{message}"
+    );
+    assert!(message.contains("--lenient"), "{message}");
+
+    let (json, stderr) = triangulate(&file, &["--lenient"]);
+    assert!(!triangles(&json).is_empty());
+    assert!(stderr.contains("repair"), "{stderr}");
+}
+
+#[test]
+fn misplaced_hole_names_polygon_and_ring() {
+    let dir = scratch("misplaced_hole");
+    let text = format!("[{SQUARE}, [[[20,0],[30,0],[30,10],[20,10]], [[40,0],[41,0],[41,1]]]]");
+    let file = write(&dir, "shapes.json", &text);
+    let message = refused(&file, &["--nesting", "first-outer"]);
+    assert!(message.contains("polygon 1, ring 1"), "{message}");
+    let (json, _) = triangulate(&file, &["--nesting", "first-outer", "--lenient"]);
+    assert!(triangles(&json).len() >= 4);
+}
+
+#[test]
+fn unwritable_output_is_one_line() {
+    let dir = scratch("unwritable");
+    let file = write(&dir, "square.json", SQUARE);
+    let out = polytri(&[
+        "triangulate",
+        file.to_str().unwrap(),
+        "-o",
+        dir.join("no/such/dir.json").to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(1));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(stderr.contains("cannot write"), "{stderr}");
+}
+
+#[test]
+fn bad_usage_exits_2() {
+    assert_eq!(polytri(&["triangulate"]).status.code(), Some(2));
+    assert_eq!(
+        polytri(&["triangulate", "x.json", "--strategy", "slow"])
+            .status
+            .code(),
+        Some(2)
+    );
+}
+
+/// Odd but readable inputs: exit 0 or 1, never a panic or a crash.
+#[test]
+fn odd_inputs_never_panic() {
+    let dir = scratch("odd");
+    let cases = [
+        "",
+        "[]",
+        "[[]]",
+        "[[[]]]",
+        "[[[1,2]]]",
+        "[[[0,0],[1,1],[2,2]]]",
+        "[[[0,0],[0,0],[0,0],[0,0]]]",
+        "[[[1e308,1e308],[-1e308,1e308],[0,-1e308]]]",
+        "[[[[[[0,0]]]]]]",
+        "{}",
+        "null",
+        r#"{"type":"Polygon","coordinates":[]}"#,
+        r#"{"type":"Polygon","coordinates":[[[0,0]]]}"#,
+        r#"{"type":"FeatureCollection","features":[]}"#,
+        "POLYGON EMPTY",
+        "POLYGON ((0 0, 1 1))",
+        "POLYGON ((0 0, 1 0, +inf 1, 0 0))",
+        "MULTIPOLYGON (((",
+        ")",
+    ];
+    for (k, text) in cases.iter().enumerate() {
+        let file = write(&dir, &format!("case{k}.json"), text);
+        for extra in [
+            &[][..],
+            &["--lenient"],
+            &["--precision", "f32", "--format", "svg"],
+        ] {
+            let mut args = vec!["triangulate", file.to_str().unwrap()];
+            args.extend_from_slice(extra);
+            let out = polytri(&args);
+            let stderr = String::from_utf8_lossy(&out.stderr);
+            assert!(
+                matches!(out.status.code(), Some(0 | 1)),
+                "{text:?} {extra:?}: {:?} {stderr}",
+                out.status
+            );
+            assert!(!stderr.contains("panicked"), "{text:?} {extra:?}: {stderr}");
+            if out.status.code() == Some(1) {
+                assert_eq!(stderr.lines().count(), 1, "{text:?} {extra:?}: {stderr}");
+            }
+        }
+    }
+}

@@ -59,15 +59,21 @@ pub(crate) fn bridge(cx: &mut Context) -> Result<(), Error> {
 
 /// Bridges one hole into the ring around it.
 fn eliminate_hole(cx: &mut Context, hole: usize) -> Result<(), Error> {
-    let m = cx.rings[hole].rightmost;
+    let mut m = cx.rings[hole].rightmost;
     let target = match find_touching(cx, m) {
         Some(x) => Target::Touching(x),
         None => match find_bridge(cx, m) {
             Some(x) => Target::Visible(x),
-            None if cx.lenient => {
-                skip_ring(cx, hole);
-                return Ok(());
-            }
+            None if cx.lenient => match bridge_from_elsewhere(cx, m) {
+                Some((other, x)) => {
+                    m = other;
+                    Target::Visible(x)
+                }
+                None => {
+                    skip_ring(cx, hole);
+                    return Ok(());
+                }
+            },
             None => return Err(Error::Internal { stage: "bridge" }),
         },
     };
@@ -101,6 +107,33 @@ fn eliminate_hole(cx: &mut Context, hole: usize) -> Result<(), Error> {
         outer.len -= 2;
     }
     Ok(())
+}
+
+/// Lenient mode: the ray from the hole's rightmost vertex hits nothing (the hole sticks
+/// out of its polygon, say). Tries the hole's other vertices, keeping a bridge that crosses
+/// none of the hole's own edges; returns the hole vertex and its target.
+fn bridge_from_elsewhere(cx: &Context, m: NodeId) -> Option<(NodeId, NodeId)> {
+    let mut v = cx.pool.next(m);
+    while v != m {
+        if let Some(x) = find_bridge(cx, v) {
+            let (pv, px) = (cx.pool.p(v), cx.pool.p(x));
+            let mut e = cx.pool.next(v);
+            let mut clear = true;
+            while cx.pool.next(e) != v {
+                let (a, b) = (cx.pool.p(e), cx.pool.p(cx.pool.next(e)));
+                if crate::clip::crosses(pv, px, a, b) {
+                    clear = false;
+                    break;
+                }
+                e = cx.pool.next(e);
+            }
+            if clear {
+                return Some((v, x));
+            }
+        }
+        v = cx.pool.next(v);
+    }
+    None
 }
 
 /// How a hole connects.

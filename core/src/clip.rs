@@ -54,10 +54,20 @@ struct Clipper<'a> {
     reflex_count: usize,
     /// The fan shortcut failed once (a degenerate ring): don't try again.
     no_fan: bool,
+    /// Lenient mode with crossing edges: ears using a crossed edge wait until nothing else
+    /// can be cut, so that overlaps stay where the input crosses itself.
+    avoid_crossed: bool,
 }
 
 /// Clips every polygon; returns how many there were.
-pub(crate) fn clip(cx: &mut Context, strategy: Strategy, out: &mut Vec<[u32; 3]>) -> Result<usize, Error> {
+/// With `avoid_crossed`, ears at edges flagged as crossing wait until nothing else can be
+/// cut (lenient mode only).
+pub(crate) fn clip(
+    cx: &mut Context,
+    strategy: Strategy,
+    avoid_crossed: bool,
+    out: &mut Vec<[u32; 3]>,
+) -> Result<usize, Error> {
     let mut polygons = 0;
     for r in 0..cx.rings.len() {
         let ring = cx.rings[r];
@@ -68,7 +78,7 @@ pub(crate) fn clip(cx: &mut Context, strategy: Strategy, out: &mut Vec<[u32; 3]>
         cx.clip.pending.clear();
         cx.clip.pending.push(ring.start);
         while let Some(start) = cx.clip.pending.pop() {
-            let (mut clipper, start) = Clipper::new(cx, out, start);
+            let (mut clipper, start) = Clipper::new(cx, out, start, avoid_crossed);
             match strategy {
                 Strategy::Fast => clipper.fast(start)?,
                 Strategy::Quality => clipper.quality(start)?,
@@ -81,7 +91,12 @@ pub(crate) fn clip(cx: &mut Context, strategy: Strategy, out: &mut Vec<[u32; 3]>
 impl<'a> Clipper<'a> {
     /// Collapses zero-width walls, classifies the ring through `start` and lists its
     /// reflex nodes. Returns the clipper and a live node to start from.
-    fn new(cx: &'a mut Context, out: &'a mut Vec<[u32; 3]>, start: NodeId) -> (Self, NodeId) {
+    fn new(
+        cx: &'a mut Context,
+        out: &'a mut Vec<[u32; 3]>,
+        start: NodeId,
+        avoid_crossed: bool,
+    ) -> (Self, NodeId) {
         let start = remove_walls(cx, start);
         cx.clip.reflex.clear();
         let mut len = 0;
@@ -100,7 +115,7 @@ impl<'a> Clipper<'a> {
             }
         }
         let reflex_count = cx.clip.reflex.len();
-        (Clipper { cx, out, len, reflex_count, no_fan: false }, start)
+        (Clipper { cx, out, len, reflex_count, no_fan: false, avoid_crossed }, start)
     }
 
     /// The paper's high-performance walk.
@@ -139,6 +154,12 @@ impl<'a> Clipper<'a> {
         let mut last = start;
         while self.len > 3 {
             let Some(Reverse((_, n, stamp))) = self.cx.clip.heap.pop() else {
+                if self.avoid_crossed {
+                    // only ears at crossed edges are left: allow them, look again
+                    self.avoid_crossed = false;
+                    self.seed_heap(last);
+                    continue;
+                }
                 // No ear queued: invalid input (or a bug). Re-seeding the queue after every
                 // repair would cost a full scan each time; the walk finishes such rings.
                 last = self.stuck(last)?;
@@ -197,6 +218,9 @@ impl<'a> Clipper<'a> {
         let (an, cn) = (pool.prev(ear), pool.next(ear));
         let (a, b, c) = (pool.p(an), pool.p(ear), pool.p(cn));
         if orient2d(a, b, c) != Orientation::CounterClockwise {
+            return false;
+        }
+        if self.avoid_crossed && (pool.get(an).crossed || pool.get(ear).crossed) {
             return false;
         }
         let (x0, x1) = (a.x.min(b.x).min(c.x), a.x.max(b.x).max(c.x));
@@ -358,6 +382,16 @@ impl<'a> Clipper<'a> {
         if !self.cx.lenient {
             return Err(Error::Internal { stage: "clip" });
         }
+        if self.avoid_crossed {
+            // only ears at crossed edges are left: allow them and walk again
+            self.avoid_crossed = false;
+            let mut n = at;
+            for _ in 0..self.len {
+                self.cx.pool.get_mut(n).not_ear = false;
+                n = self.cx.pool.next(n);
+            }
+            return Ok(at);
+        }
         if let Some(n) = self.cure_local_intersections(at) {
             return Ok(n);
         }
@@ -518,7 +552,7 @@ fn sees(pool: &crate::pool::Pool, n: NodeId, q: Point) -> bool {
 }
 
 /// Whether segments a–b and c–d cross at a point interior to both.
-fn crosses(a: Point, b: Point, c: Point, d: Point) -> bool {
+pub(crate) fn crosses(a: Point, b: Point, c: Point, d: Point) -> bool {
     use Orientation::*;
     let (o1, o2) = (orient2d(a, b, c), orient2d(a, b, d));
     let (o3, o4) = (orient2d(c, d, a), orient2d(c, d, b));

@@ -29,6 +29,8 @@ pub(crate) struct Node {
     pub removed: bool,
     /// Clipping: the turn prev → self → next is not strictly counter-clockwise.
     pub reflex: bool,
+    /// Lenient mode: the edge leaving this node crosses another edge; ears using it wait.
+    pub crossed: bool,
     /// Clipping: failed the ear test, skip until a neighbour changes (paper §3.3).
     pub not_ear: bool,
     /// Bumped whenever the node's ear status may have changed (quality strategy's queue).
@@ -87,6 +89,7 @@ impl Pool {
             next: id,
             removed: false,
             reflex: false,
+            crossed: false,
             not_ear: false,
             stamp: 0,
         });
@@ -152,6 +155,9 @@ impl Pool {
         let bp = self.prev(b);
         let a2 = self.copy_after(a, a); // a → a2 → an
         let b2 = self.copy_after(b, bp); // bp → b2 → b
+        // a2 takes over a's edge; the two bridge edges cross nothing
+        self.get_mut(a).crossed = false;
+        self.get_mut(b2).crossed = false;
         // a → b, b2 → a2
         self.get_mut(a).next = b;
         self.get_mut(b).prev = a;

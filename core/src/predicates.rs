@@ -106,6 +106,21 @@ pub(crate) fn approx_interior_angle(a: Point, b: Point, c: Point) -> f64 {
     }
 }
 
+/// Twice the signed area of triangle a, b, c in floating point. **Not exact**: lenient mode
+/// uses it to measure how well a result covers input with crossing edges.
+#[inline]
+pub(crate) fn approx_double_area(a: Point, b: Point, c: Point) -> f64 {
+    (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)
+}
+
+/// The cross product a × b in floating point, a term of the shoelace formula. **Not
+/// exact**: lenient mode sums it to guess the winding of rings with crossing edges, where no
+/// exact answer exists anyway.
+#[inline]
+pub(crate) fn approx_cross(a: Point, b: Point) -> f64 {
+    a.x * b.y - a.y * b.x
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -18,7 +18,7 @@
 
 use crate::nest::same_ray;
 use crate::pool::NodeId;
-use crate::predicates::{orient2d, Orientation, Point};
+use crate::predicates::{approx_cross, orient2d, Orientation, Point};
 use crate::triangulator::{Context, Ring};
 
 /// Re-links every shared position and re-traces the rings; returns the number of holes.
@@ -124,10 +124,12 @@ fn retrace(cx: &mut Context) {
         let index = cx.rings.len() as u32;
         let input = cx.rings[ring].input;
         let (mut len, mut rightmost, mut hole) = (0, n, false);
+        let mut area = 0.0;
         let mut m = n;
         loop {
             cx.pool.get_mut(m).ring = index;
             len += 1;
+            area += approx_cross(cx.pool.p(m), cx.pool.p(cx.pool.next(m)));
             let (p, best) = (cx.pool.p(m), cx.pool.p(rightmost));
             let cw = turn(cx, m) == Orientation::Clockwise;
             if p.x > best.x || (p.x == best.x && p.y < best.y) {
@@ -140,6 +142,11 @@ fn retrace(cx: &mut Context) {
             if m == n {
                 break;
             }
+        }
+        if cx.lenient && area != 0.0 {
+            // With crossing edges the turn at one vertex may not tell the winding of the
+            // whole; the (approximate) signed area does better for such input.
+            hole = area < 0.0;
         }
         cx.rings.push(Ring {
             input,

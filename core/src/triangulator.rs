@@ -71,6 +71,8 @@ pub(crate) struct Context {
     /// Scratch: ring order for bridging, ring start nodes for the sweep.
     pub order: Vec<u32>,
     pub starts: Vec<NodeId>,
+    /// Scratch: edges by start node (lenient crossing flags).
+    pub edges: Vec<NodeId>,
     pub touches: Vec<validate::Touch>,
     /// Nodes at positions held by several nodes, sorted by position (see `touch`).
     pub shared: Vec<NodeId>,
@@ -79,6 +81,13 @@ pub(crate) struct Context {
     pub crossings: Vec<validate::Crossing>,
     pub sweep: SweepScratch,
     pub bands: Bands,
+    /// Lenient mode with crossings: the input's area (outer rings minus holes, by the
+    /// shoelace formula as earcut measures it) and snapshots for a second clipping try.
+    pub area: f64,
+    pub saved_nodes: Vec<crate::pool::Node>,
+    pub saved_rings: Vec<Ring>,
+    pub saved_repairs: Vec<Repair>,
+    pub alt_out: Vec<[u32; 3]>,
     pub clip: clip::ClipScratch,
 }
 
@@ -95,6 +104,74 @@ impl Context {
     pub fn repair(&mut self, kind: RepairKind, ring: u32, vertex: u32) {
         self.repairs.push(Repair { kind, ring, vertex });
     }
+}
+
+/// Lenient mode, input with crossing edges: no triangulation covers it exactly, so clip
+/// twice from the same bridged rings — with ears at crossed edges deferred and without —
+/// and keep the result whose area is closer to the input's (earcut's deviation measure).
+fn clip_best_effort<T: Coord>(
+    cx: &mut Context,
+    vertices: &[[T; 2]],
+    strategy: crate::Strategy,
+    out: &mut Vec<[u32; 3]>,
+) -> Result<usize, Error> {
+    cx.saved_nodes.clear();
+    cx.saved_nodes.extend_from_slice(&cx.pool.nodes);
+    cx.saved_rings.clear();
+    cx.saved_rings.extend_from_slice(&cx.rings);
+    let repairs_before = cx.repairs.len();
+    let polygons = clip::clip(cx, strategy, false, out)?;
+    let plain = deviation(cx.area, vertices, out);
+    // keep the first try's repairs aside, restore the rings, try again
+    cx.saved_repairs.clear();
+    cx.saved_repairs.extend_from_slice(&cx.repairs[repairs_before..]);
+    cx.repairs.truncate(repairs_before);
+    cx.pool.nodes.clear();
+    cx.pool.nodes.extend_from_slice(&cx.saved_nodes);
+    cx.rings.clear();
+    cx.rings.extend_from_slice(&cx.saved_rings);
+    let mut alt = core::mem::take(&mut cx.alt_out);
+    alt.clear();
+    let result = clip::clip(cx, strategy, true, &mut alt);
+    let deferred = if result.is_ok() { deviation(cx.area, vertices, &alt) } else { f64::INFINITY };
+    if deferred < plain {
+        core::mem::swap(out, &mut alt);
+    } else {
+        cx.repairs.truncate(repairs_before);
+        cx.repairs.extend_from_slice(&cx.saved_repairs);
+    }
+    cx.alt_out = alt;
+    Ok(polygons)
+}
+
+/// earcut's deviation of triangles from an area, in floating point (a heuristic measure).
+fn deviation<T: Coord>(area: f64, vertices: &[[T; 2]], triangles: &[[u32; 3]]) -> f64 {
+    let p = |i: u32| {
+        let v = vertices.get(i as usize).copied().map(|v| [v[0].to_f64(), v[1].to_f64()]);
+        let [x, y] = v.unwrap_or([0.0, 0.0]);
+        crate::predicates::Point::new(x, y)
+    };
+    let covered: f64 = triangles
+        .iter()
+        .map(|t| crate::predicates::approx_double_area(p(t[0]), p(t[1]), p(t[2])).abs())
+        .sum();
+    if area == 0.0 {
+        return if covered == 0.0 { 0.0 } else { f64::INFINITY };
+    }
+    ((covered - area) / area).abs()
+}
+
+/// Twice the input's area: outer rings minus holes (by nesting depth), shoelace formula.
+fn signed_area(cx: &Context) -> f64 {
+    let mut total = 0.0;
+    for ring in cx.rings.iter().filter(|r| r.alive) {
+        let mut s = 0.0;
+        for n in cx.pool.ring(ring.start) {
+            s += crate::predicates::approx_cross(cx.pool.p(n), cx.pool.p(cx.pool.next(n)));
+        }
+        total += if ring.depth % 2 == 0 { s.abs() } else { -s.abs() };
+    }
+    total
 }
 
 /// Triangulates polygons with holes and islands; reuse it to avoid allocation.
@@ -162,9 +239,21 @@ impl<T: Coord> Triangulator<T> {
         load::load(cx, vertices, ring_starts)?;
         clean::clean(cx)?;
         nest::nest(cx, options.nesting)?;
+        if cx.lenient && !cx.crossings.is_empty() {
+            cx.area = signed_area(cx);
+        }
         let holes = touch::join(cx);
+        if cx.lenient && !cx.crossings.is_empty() {
+            cx.starts.clear();
+            cx.starts.extend(cx.rings.iter().filter(|r| r.alive).map(|r| r.start));
+            validate::mark_crossed(&mut cx.pool, &cx.starts, &mut cx.edges);
+        }
         bridge::bridge(cx)?;
-        let polygons = clip::clip(cx, options.strategy, out)?;
+        let polygons = if cx.lenient && !cx.crossings.is_empty() {
+            clip_best_effort(cx, vertices, options.strategy, out)?
+        } else {
+            clip::clip(cx, options.strategy, false, out)?
+        };
         Ok(Report {
             triangles: out.len(),
             polygons,

@@ -324,7 +324,7 @@ mod tests {
     fn bridged(vertices: &[[f64; 2]], starts: &[usize]) -> Vec<u32> {
         let mut cx = Context::default();
         load::load(&mut cx, vertices, starts).unwrap();
-        clean::clean(&mut cx).unwrap();
+        clean::clean(&mut cx, false).unwrap();
         nest::nest(&mut cx, Nesting::Auto).unwrap();
         bridge(&mut cx).unwrap();
         let start = cx.rings[0].start;

@@ -3,7 +3,8 @@
 //! 1. Drop repeated vertices, collinear vertices and zero-width spikes from each ring
 //!    (earcut's `filterPoints`); a ring left with fewer than three vertices encloses no area
 //!    and is dropped.
-//! 2. Sweep all edges (`validate`): crossing edges are refused in strict mode; vertices
+//! 2. Sweep all edges (`validate`): crossing edges are refused in strict mode (lenient
+//!    mode may uncross bow ties, see [`Triangulator`](crate::Triangulator)); vertices
 //!    lying inside another edge ("T-junctions", e.g. a hole touching the outer ring in the
 //!    middle of an edge) are found in both modes.
 //! 3. Give every position one vertex index: where rings touch, all nodes there use the
@@ -20,12 +21,16 @@ use crate::triangulator::Context;
 use crate::validate::{self, Crossing};
 use crate::Error;
 
-/// Runs the clean stage over every loaded ring.
-pub(crate) fn clean(cx: &mut Context) -> Result<(), Error> {
+/// Runs the clean stage over every loaded ring. With `untwist` (lenient mode), bow ties are
+/// uncrossed first where the sweep finds crossing edges.
+pub(crate) fn clean(cx: &mut Context, untwist: bool) -> Result<(), Error> {
     for r in 0..cx.rings.len() {
         filter_ring(cx, r);
     }
     sweep(cx)?;
+    if untwist && cx.lenient && !cx.crossings.is_empty() && untwist_bow_ties(cx) {
+        sweep(cx)?;
+    }
     canonical_vertices(cx);
     split_touched_edges(cx);
     collect_shared(cx);
@@ -131,6 +136,37 @@ fn sweep(cx: &mut Context) -> Result<(), Error> {
         }
     }
     Ok(())
+}
+
+/// Lenient mode: swaps p and q wherever edge a → p crosses edge q → b two steps on (a
+/// bow tie), which uncrosses them (a 2-opt move). Returns whether anything changed.
+fn untwist_bow_ties(cx: &mut Context) -> bool {
+    let mut any = false;
+    for r in 0..cx.rings.len() {
+        if !cx.rings[r].alive || cx.rings[r].len < 4 {
+            continue;
+        }
+        let mut p = cx.rings[r].start;
+        for _ in 0..cx.rings[r].len {
+            let pool = &mut cx.pool;
+            let (a, q) = (pool.prev(p), pool.next(p));
+            let b = pool.next(q);
+            if a != b && crate::clip::crosses(pool.p(a), pool.p(p), pool.p(q), pool.p(b)) {
+                pool.get_mut(a).next = q;
+                pool.get_mut(q).prev = a;
+                pool.get_mut(q).next = p;
+                pool.get_mut(p).prev = q;
+                pool.get_mut(p).next = b;
+                pool.get_mut(b).prev = p;
+                let (ring, vertex) = (cx.rings[r].input, pool.get(p).vertex);
+                cx.repair(RepairKind::EdgesCross, ring, vertex);
+                any = true;
+            }
+            p = cx.pool.next(p);
+        }
+        cx.rings[r].start = p;
+    }
+    any
 }
 
 /// Makes all nodes at one position use one vertex index, the lowest; reports the others.

@@ -87,7 +87,10 @@ pub(crate) struct Context {
     pub saved_nodes: Vec<crate::pool::Node>,
     pub saved_rings: Vec<Ring>,
     pub saved_repairs: Vec<Repair>,
+    pub first_dropped: Vec<Dropped>,
+    pub first_repairs: Vec<Repair>,
     pub alt_out: Vec<[u32; 3]>,
+    pub alt_untwisted: Vec<[u32; 3]>,
     pub clip: clip::ClipScratch,
 }
 
@@ -104,6 +107,38 @@ impl Context {
     pub fn repair(&mut self, kind: RepairKind, ring: u32, vertex: u32) {
         self.repairs.push(Repair { kind, ring, vertex });
     }
+}
+
+/// The whole pipeline once; returns the numbers of polygons and holes.
+fn run<T: Coord>(
+    cx: &mut Context,
+    vertices: &[[T; 2]],
+    ring_starts: &[usize],
+    options: &Options,
+    untwist: bool,
+    out: &mut Vec<[u32; 3]>,
+) -> Result<(usize, usize), Error> {
+    out.clear();
+    cx.reset(options.lenient);
+    load::load(cx, vertices, ring_starts)?;
+    clean::clean(cx, untwist)?;
+    nest::nest(cx, options.nesting)?;
+    if cx.lenient && !cx.crossings.is_empty() {
+        cx.area = signed_area(cx);
+    }
+    let holes = touch::join(cx);
+    if cx.lenient && !cx.crossings.is_empty() {
+        cx.starts.clear();
+        cx.starts.extend(cx.rings.iter().filter(|r| r.alive).map(|r| r.start));
+        validate::mark_crossed(&mut cx.pool, &cx.starts, &mut cx.edges);
+    }
+    bridge::bridge(cx)?;
+    let polygons = if cx.lenient && !cx.crossings.is_empty() {
+        clip_best_effort(cx, vertices, options.strategy, out)?
+    } else {
+        clip::clip(cx, options.strategy, false, out)?
+    };
+    Ok((polygons, holes))
 }
 
 /// Lenient mode, input with crossing edges: no triangulation covers it exactly, so clip
@@ -233,27 +268,32 @@ impl<T: Coord> Triangulator<T> {
         options: &Options,
         out: &mut Vec<[u32; 3]>,
     ) -> Result<Report<'_>, Error> {
-        out.clear();
         let cx = &mut self.cx;
-        cx.reset(options.lenient);
-        load::load(cx, vertices, ring_starts)?;
-        clean::clean(cx)?;
-        nest::nest(cx, options.nesting)?;
+        let (mut polygons, mut holes) = run(cx, vertices, ring_starts, options, false, out)?;
         if cx.lenient && !cx.crossings.is_empty() {
-            cx.area = signed_area(cx);
+            // Crossing edges have no exact triangulation: try again with bow ties
+            // uncrossed, keep whichever covers the input's area more closely.
+            let first = deviation(cx.area, vertices, out);
+            cx.first_dropped.clear();
+            cx.first_dropped.extend_from_slice(&cx.dropped);
+            cx.first_repairs.clear();
+            cx.first_repairs.extend_from_slice(&cx.repairs);
+            let mut alt = core::mem::take(&mut cx.alt_untwisted);
+            let second = run(cx, vertices, ring_starts, options, true, &mut alt);
+            match second {
+                Ok(counts) if deviation(cx.area, vertices, &alt) < first => {
+                    (polygons, holes) = counts;
+                    core::mem::swap(out, &mut alt);
+                }
+                _ => {
+                    cx.dropped.clear();
+                    cx.dropped.extend_from_slice(&cx.first_dropped);
+                    cx.repairs.clear();
+                    cx.repairs.extend_from_slice(&cx.first_repairs);
+                }
+            }
+            cx.alt_untwisted = alt;
         }
-        let holes = touch::join(cx);
-        if cx.lenient && !cx.crossings.is_empty() {
-            cx.starts.clear();
-            cx.starts.extend(cx.rings.iter().filter(|r| r.alive).map(|r| r.start));
-            validate::mark_crossed(&mut cx.pool, &cx.starts, &mut cx.edges);
-        }
-        bridge::bridge(cx)?;
-        let polygons = if cx.lenient && !cx.crossings.is_empty() {
-            clip_best_effort(cx, vertices, options.strategy, out)?
-        } else {
-            clip::clip(cx, options.strategy, false, out)?
-        };
         Ok(Report {
             triangles: out.len(),
             polygons,

@@ -47,8 +47,13 @@ pub(crate) fn bridge(cx: &mut Context) -> Result<(), Error> {
     index_all_edges(cx);
     let (pool, rings) = (&cx.pool, &cx.rings);
     cx.order.sort_unstable_by(|&a, &b| {
-        let (pa, pb) = (pool.p(rings[a as usize].rightmost), pool.p(rings[b as usize].rightmost));
-        pb.x.total_cmp(&pa.x).then(pa.y.total_cmp(&pb.y)).then(a.cmp(&b))
+        let (pa, pb) = (
+            pool.p(rings[a as usize].rightmost),
+            pool.p(rings[b as usize].rightmost),
+        );
+        pb.x.total_cmp(&pa.x)
+            .then(pa.y.total_cmp(&pb.y))
+            .then(a.cmp(&b))
     });
     for k in 0..cx.order.len() {
         let hole = cx.order[k] as usize;
@@ -211,7 +216,9 @@ fn nearest_hit(cx: &Context, pm: Point) -> Option<(NodeId, NodeId)> {
             continue;
         }
         best = match best {
-            Some((c, d)) if compare_hits(pm.y, cx.pool.p(c), cx.pool.p(d), pa, pb) != Ordering::Less => {
+            Some((c, d))
+                if compare_hits(pm.y, cx.pool.p(c), cx.pool.p(d), pa, pb) != Ordering::Less =>
+            {
                 Some((c, d))
             }
             _ => Some((a, b)),
@@ -258,12 +265,23 @@ fn side_of_line(y: f64, a: Point, b: Point, c: Point, d: Point) -> Option<Orderi
 
 /// Among the vertices of `component` inside triangle M, I, P (I: the hit on edge a → b) or
 /// on segment MP, the one at the smallest angle to the ray, then the nearest; P if none.
-fn least_angle_in_triangle(cx: &Context, pm: Point, pa: Point, pb: Point, p: Point, component: u32) -> Point {
+fn least_angle_in_triangle(
+    cx: &Context,
+    pm: Point,
+    pa: Point,
+    pb: Point,
+    p: Point,
+    component: u32,
+) -> Point {
     let above = p.y > pm.y;
     let (ylo, yhi) = if above { (pm.y, p.y) } else { (p.y, pm.y) };
     // Sides of the triangle: the ray's line (exclusive), the edge's line (exclusive: M's
     // side), and segment MP (inclusive: a vertex on it blocks the bridge).
-    let outside_mp = if above { Orientation::CounterClockwise } else { Orientation::Clockwise };
+    let outside_mp = if above {
+        Orientation::CounterClockwise
+    } else {
+        Orientation::Clockwise
+    };
     let mut best = p;
     for r in cx.bands.query(ylo, yhi) {
         let node = cx.pool.get(r);
@@ -334,7 +352,10 @@ mod tests {
     /// The vertex the hole vertex `m` was bridged to (its predecessor in the merged ring).
     fn bridge_target(vertices: &[[f64; 2]], starts: &[usize], m: u32) -> u32 {
         let ring = bridged(vertices, starts);
-        let k = ring.iter().position(|&v| v == m).expect("hole vertex in the merged ring");
+        let k = ring
+            .iter()
+            .position(|&v| v == m)
+            .expect("hole vertex in the merged ring");
         ring[(k + ring.len() - 1) % ring.len()]
     }
 
@@ -364,7 +385,16 @@ mod tests {
 
     #[test]
     fn ray_hits_vertex_exactly() {
-        let v = [[0., 0.], [10., 0.], [12., 5.], [10., 10.], [0., 10.], [4., 4.], [6., 5.], [4., 6.]];
+        let v = [
+            [0., 0.],
+            [10., 0.],
+            [12., 5.],
+            [10., 10.],
+            [0., 10.],
+            [4., 4.],
+            [6., 5.],
+            [4., 6.],
+        ];
         assert_eq!(bridge_target(&v, &[0, 5], 6), 2);
     }
 
@@ -372,8 +402,16 @@ mod tests {
     fn reflex_vertex_inside_triangle_blocks_p() {
         // notch tip (8,3) lies inside triangle M(6,5), I(10,5), P(10,0)
         let v = [
-            [0., 0.], [7., 0.], [8., 3.], [9., 0.], [10., 0.], [10., 10.], [0., 10.],
-            [4., 4.], [6., 5.], [4., 6.],
+            [0., 0.],
+            [7., 0.],
+            [8., 3.],
+            [9., 0.],
+            [10., 0.],
+            [10., 10.],
+            [0., 10.],
+            [4., 4.],
+            [6., 5.],
+            [4., 6.],
         ];
         assert_eq!(bridge_target(&v, &[0, 7], 8), 2);
     }
@@ -382,8 +420,18 @@ mod tests {
     fn smallest_angle_to_the_ray_wins() {
         // (8,3) at 45° and (9,4.5) at about 9.5° below the ray: the smaller angle wins
         let v = [
-            [0., 0.], [7., 0.], [8., 3.], [8.5, 0.], [9., 4.5], [9.5, 0.], [10., 0.], [10., 10.],
-            [0., 10.], [4., 4.], [6., 5.], [4., 6.],
+            [0., 0.],
+            [7., 0.],
+            [8., 3.],
+            [8.5, 0.],
+            [9., 4.5],
+            [9.5, 0.],
+            [10., 0.],
+            [10., 10.],
+            [0., 10.],
+            [4., 4.],
+            [6., 5.],
+            [4., 6.],
         ];
         assert_eq!(bridge_target(&v, &[0, 9], 10), 4);
     }
@@ -392,8 +440,18 @@ mod tests {
     fn equal_angles_pick_the_nearest() {
         // (8,4) and (9,3.5) lie on one ray from M = (6,5): the nearer one hides the other
         let v = [
-            [0., 0.], [7., 0.], [8., 4.], [8.5, 0.], [9., 3.5], [9.5, 0.], [10., 0.], [10., 10.],
-            [0., 10.], [4., 4.], [6., 5.], [4., 6.],
+            [0., 0.],
+            [7., 0.],
+            [8., 4.],
+            [8.5, 0.],
+            [9., 3.5],
+            [9.5, 0.],
+            [10., 0.],
+            [10., 10.],
+            [0., 10.],
+            [4., 4.],
+            [6., 5.],
+            [4., 6.],
         ];
         assert_eq!(bridge_target(&v, &[0, 9], 10), 2);
     }
@@ -403,8 +461,18 @@ mod tests {
         // the same configuration rotated and with the outer ring reversed: still bridged to
         // the smallest-angle vertex, whose index does not change
         let v = [
-            [0., 0.], [7., 0.], [8., 3.], [8.5, 0.], [9., 4.5], [9.5, 0.], [10., 0.], [10., 10.],
-            [0., 10.], [4., 4.], [6., 5.], [4., 6.],
+            [0., 0.],
+            [7., 0.],
+            [8., 3.],
+            [8.5, 0.],
+            [9., 4.5],
+            [9.5, 0.],
+            [10., 0.],
+            [10., 10.],
+            [0., 10.],
+            [4., 4.],
+            [6., 5.],
+            [4., 6.],
         ];
         for k in 0..4 {
             let r = rotated(&v, k);
@@ -426,9 +494,16 @@ mod tests {
         // hits that bridge at (17.5,5), where two copies run in opposite directions. Only
         // the upward copy has M on its inner side; P is its endpoint (20,0), vertex 1.
         let v = [
-            [0., 0.], [20., 0.], [20., 20.], [0., 20.],
-            [13., 9.], [15., 10.], [13., 11.],
-            [8., 4.], [10., 5.], [8., 6.],
+            [0., 0.],
+            [20., 0.],
+            [20., 20.],
+            [0., 20.],
+            [13., 9.],
+            [15., 10.],
+            [13., 11.],
+            [8., 4.],
+            [10., 5.],
+            [8., 6.],
         ];
         let ring = bridged(&v, &[0, 4, 7]);
         assert_eq!(ring.len(), 4 + 3 + 3 + 4);
@@ -452,6 +527,9 @@ mod tests {
         assert_eq!(compare_hits(y, c, d, c, d), Ordering::Equal);
         // edges sharing their endpoint on the line: equal hits
         let e = Point::new(2.0, 0.1);
-        assert_eq!(compare_hits(y, Point::new(1., -1.), e, e, Point::new(3., 1.)), Ordering::Equal);
+        assert_eq!(
+            compare_hits(y, Point::new(1., -1.), e, e, Point::new(3., 1.)),
+            Ordering::Equal
+        );
     }
 }

@@ -102,13 +102,18 @@ fn filter_ring(cx: &mut Context, r: usize) {
 fn drop_node(cx: &mut Context, n: NodeId, ring: u32, reason: DropReason) {
     let vertex = cx.pool.get(n).vertex;
     cx.pool.remove(n);
-    cx.dropped.push(Dropped { vertex, ring, reason });
+    cx.dropped.push(Dropped {
+        vertex,
+        ring,
+        reason,
+    });
 }
 
 /// Sweeps every live edge: crossings are errors in strict mode, repairs in lenient mode.
 fn sweep(cx: &mut Context) -> Result<(), Error> {
     cx.starts.clear();
-    cx.starts.extend(cx.rings.iter().filter(|r| r.alive).map(|r| r.start));
+    cx.starts
+        .extend(cx.rings.iter().filter(|r| r.alive).map(|r| r.start));
     cx.touches.clear();
     cx.crossings.clear();
     validate::sweep(
@@ -180,14 +185,22 @@ fn canonical_vertices(cx: &mut Context) {
             j += 1;
         }
         if j - i > 1 {
-            let min = order[i..j].iter().map(|&n| cx.pool.get(n).vertex).min().unwrap_or(0);
+            let min = order[i..j]
+                .iter()
+                .map(|&n| cx.pool.get(n).vertex)
+                .min()
+                .unwrap_or(0);
             for &n in &order[i..j] {
                 let node = cx.pool.get_mut(n);
                 if node.vertex != min {
                     let (vertex, ring) = (node.vertex, node.ring);
                     node.vertex = min;
                     let ring = cx.rings[ring as usize].input;
-                    cx.dropped.push(Dropped { vertex, ring, reason: DropReason::Coincident });
+                    cx.dropped.push(Dropped {
+                        vertex,
+                        ring,
+                        reason: DropReason::Coincident,
+                    });
                 }
             }
         }
@@ -257,7 +270,8 @@ fn collect_shared(cx: &mut Context) {
     let split_nodes = cx.sweep.order.len()..cx.pool.len();
     cx.shared.extend(split_nodes.map(|n| NodeId(n as u32)));
     let pool = &cx.pool;
-    cx.shared.sort_unstable_by(|&a, &b| cmp_xy(pool.p(a), pool.p(b)).then(a.cmp(&b)));
+    cx.shared
+        .sort_unstable_by(|&a, &b| cmp_xy(pool.p(a), pool.p(b)).then(a.cmp(&b)));
     cx.shared.dedup();
 }
 
@@ -274,7 +288,11 @@ fn orient_ring(cx: &mut Context, r: usize) {
     cx.rings[r].rightmost = best;
     // At the rightmost-lowest vertex the ring turns strictly (no repeats, no spikes, and a
     // split node is never rightmost-lowest), so this turn gives the winding.
-    let turn = orient2d(cx.pool.p(cx.pool.prev(best)), cx.pool.p(best), cx.pool.p(cx.pool.next(best)));
+    let turn = orient2d(
+        cx.pool.p(cx.pool.prev(best)),
+        cx.pool.p(best),
+        cx.pool.p(cx.pool.next(best)),
+    );
     if turn == Orientation::Clockwise {
         cx.pool.reverse(start);
     }

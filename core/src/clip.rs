@@ -25,8 +25,8 @@
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 
-use crate::pool::NodeId;
 use crate::nest::corner_contains;
+use crate::pool::NodeId;
 use crate::predicates::{approx_interior_angle, left_of, orient2d, within_box, Orientation, Point};
 use crate::report::RepairKind;
 use crate::triangulator::Context;
@@ -115,7 +115,17 @@ impl<'a> Clipper<'a> {
             }
         }
         let reflex_count = cx.clip.reflex.len();
-        (Clipper { cx, out, len, reflex_count, no_fan: false, avoid_crossed }, start)
+        (
+            Clipper {
+                cx,
+                out,
+                len,
+                reflex_count,
+                no_fan: false,
+                avoid_crossed,
+            },
+            start,
+        )
     }
 
     /// The paper's high-performance walk.
@@ -131,7 +141,11 @@ impl<'a> Clipper<'a> {
                     let next = self.cx.pool.next(ear);
                     ear = self.cut(ear);
                     // continue past the new corner, as earcut does
-                    ear = if self.cx.pool.get(next).removed { ear } else { self.cx.pool.next(next) };
+                    ear = if self.cx.pool.get(next).removed {
+                        ear
+                    } else {
+                        self.cx.pool.next(next)
+                    };
                     stop = ear;
                     continue;
                 }
@@ -259,7 +273,8 @@ impl<'a> Clipper<'a> {
     /// Writes the triangle a, b, c.
     fn emit(&mut self, a: NodeId, b: NodeId, c: NodeId) {
         let pool = &self.cx.pool;
-        self.out.push([pool.get(a).vertex, pool.get(b).vertex, pool.get(c).vertex]);
+        self.out
+            .push([pool.get(a).vertex, pool.get(b).vertex, pool.get(c).vertex]);
     }
 
     /// Unlinks `n`, keeping the counts.
@@ -276,7 +291,11 @@ impl<'a> Clipper<'a> {
     fn tidy(&mut self, mut n: NodeId) {
         while self.len > 2 && !self.cx.pool.get(n).removed {
             let (prev, next) = (self.cx.pool.prev(n), self.cx.pool.next(n));
-            let (pp, pn, px) = (self.cx.pool.p(prev), self.cx.pool.p(n), self.cx.pool.p(next));
+            let (pp, pn, px) = (
+                self.cx.pool.p(prev),
+                self.cx.pool.p(n),
+                self.cx.pool.p(next),
+            );
             if pn == px {
                 // same position, same vertex index (clean made it so)
                 self.unlink(next);
@@ -349,7 +368,9 @@ impl<'a> Clipper<'a> {
     fn finish(&mut self, n: NodeId) {
         if self.len == 3 && !self.cx.pool.get(n).removed {
             let (a, c) = (self.cx.pool.prev(n), self.cx.pool.next(n));
-            if orient2d(self.cx.pool.p(a), self.cx.pool.p(n), self.cx.pool.p(c)) == Orientation::CounterClockwise {
+            if orient2d(self.cx.pool.p(a), self.cx.pool.p(n), self.cx.pool.p(c))
+                == Orientation::CounterClockwise
+            {
                 self.emit(a, n, c);
             }
         }
@@ -564,7 +585,13 @@ fn segments_meet(a: Point, b: Point, c: Point, d: Point) -> bool {
     use Orientation::*;
     let (o1, o2) = (orient2d(a, b, c), orient2d(a, b, d));
     let (o3, o4) = (orient2d(c, d, a), orient2d(c, d, b));
-    if o1 != o2 && o3 != o4 && o1 != Collinear && o2 != Collinear && o3 != Collinear && o4 != Collinear {
+    if o1 != o2
+        && o3 != o4
+        && o1 != Collinear
+        && o2 != Collinear
+        && o3 != Collinear
+        && o4 != Collinear
+    {
         return true;
     }
     (o1 == Collinear && within_box(a, b, c))

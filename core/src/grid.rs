@@ -34,11 +34,21 @@ impl Bands {
     pub fn reset(&mut self, ymin: f64, ymax: f64, edges: usize, total_dy: f64) {
         let height = ymax - ymin;
         let mean_dy = total_dy / edges.max(1) as f64;
-        let wanted = (height / mean_dy).min((edges / 2) as f64).min((1 << 20) as f64);
-        let count = if wanted.is_finite() && wanted >= 1.0 { wanted as usize } else { 1 };
+        let wanted = (height / mean_dy)
+            .min((edges / 2) as f64)
+            .min((1 << 20) as f64);
+        let count = if wanted.is_finite() && wanted >= 1.0 {
+            wanted as usize
+        } else {
+            1
+        };
         let scale = count as f64 / height;
         self.y0 = ymin;
-        self.scale = if scale.is_finite() && height > 0.0 { scale } else { 0.0 };
+        self.scale = if scale.is_finite() && height > 0.0 {
+            scale
+        } else {
+            0.0
+        };
         self.count = count;
         self.max_span = MAX_SPAN.max(count / 16);
         if self.lists.len() < count {
@@ -76,7 +86,11 @@ impl Bands {
     /// Every listed edge whose y-range may meet `ylo..=yhi` (and possibly others, and
     /// possibly some twice).
     pub fn query(&self, ylo: f64, yhi: f64) -> impl Iterator<Item = NodeId> + '_ {
-        let (lo, hi) = if self.count == 0 { (1, 0) } else { (self.band(ylo), self.band(yhi)) };
+        let (lo, hi) = if self.count == 0 {
+            (1, 0)
+        } else {
+            (self.band(ylo), self.band(yhi))
+        };
         let lists = self.lists.get(lo..=hi).unwrap_or(&[]);
         lists.iter().flatten().chain(self.long.iter()).copied()
     }
@@ -108,7 +122,11 @@ mod tests {
         bands.insert(NodeId(0), Point::new(0., 5.), Point::new(1., 5.));
         assert_eq!(bands.query(5.0, 5.0).count(), 1);
         bands.reset(-f64::MAX, f64::MAX, 100, f64::MAX);
-        bands.insert(NodeId(0), Point::new(0., -f64::MAX), Point::new(1., f64::MAX));
+        bands.insert(
+            NodeId(0),
+            Point::new(0., -f64::MAX),
+            Point::new(1., f64::MAX),
+        );
         assert_eq!(bands.query(0.0, 0.0).count(), 1);
     }
 }

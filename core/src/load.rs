@@ -14,7 +14,9 @@ pub(crate) fn load<T: Coord>(
     ring_starts: &[usize],
 ) -> Result<(), Error> {
     if vertices.len() > u32::MAX as usize - 1 {
-        return Err(Error::TooManyVertices { count: vertices.len() });
+        return Err(Error::TooManyVertices {
+            count: vertices.len(),
+        });
     }
     if vertices.is_empty() {
         return Ok(());
@@ -32,12 +34,24 @@ pub(crate) fn load<T: Coord>(
                 Some(&s) => {
                     if !cx.lenient {
                         return Err(if s > vertices.len() {
-                            Error::RingStartOutOfRange { ring: k, start: s, len: vertices.len() }
+                            Error::RingStartOutOfRange {
+                                ring: k,
+                                start: s,
+                                len: vertices.len(),
+                            }
                         } else {
-                            Error::RingStartsNotIncreasing { ring: k, start: s, previous: start }
+                            Error::RingStartsNotIncreasing {
+                                ring: k,
+                                start: s,
+                                previous: start,
+                            }
                         });
                     }
-                    cx.repair(RepairKind::RingStartIgnored, k as u32, s.min(u32::MAX as usize) as u32);
+                    cx.repair(
+                        RepairKind::RingStartIgnored,
+                        k as u32,
+                        s.min(u32::MAX as usize) as u32,
+                    );
                     k += 1;
                 }
             }
@@ -54,10 +68,16 @@ fn check_first_start(cx: &mut Context, ring_starts: &[usize]) -> Result<(), Erro
         Some(0) => Ok(()),
         other if cx.lenient => {
             let s = other.copied().unwrap_or(0);
-            cx.repair(RepairKind::RingStartIgnored, 0, s.min(u32::MAX as usize) as u32);
+            cx.repair(
+                RepairKind::RingStartIgnored,
+                0,
+                s.min(u32::MAX as usize) as u32,
+            );
             Ok(())
         }
-        other => Err(Error::FirstRingStart { start: other.copied() }),
+        other => Err(Error::FirstRingStart {
+            start: other.copied(),
+        }),
     }
 }
 
@@ -80,7 +100,11 @@ fn load_ring<T: Coord>(
             if !cx.lenient {
                 return Err(Error::NonFinite { vertex: i });
             }
-            cx.dropped.push(Dropped { vertex: i as u32, ring: input, reason: DropReason::NonFinite });
+            cx.dropped.push(Dropped {
+                vertex: i as u32,
+                ring: input,
+                reason: DropReason::NonFinite,
+            });
             continue;
         }
         cx.pool.push(Point::new(x, y), i as u32, ring);

@@ -71,12 +71,20 @@ pub(crate) fn skip_ring(cx: &mut Context, r: usize) {
         return;
     }
     cx.rings[r].alive = false;
-    cx.repair(RepairKind::HoleOutside, ring.input, cx.pool.get(ring.start).vertex);
+    cx.repair(
+        RepairKind::HoleOutside,
+        ring.input,
+        cx.pool.get(ring.start).vertex,
+    );
     let start = ring.start;
     let mut n = start;
     loop {
         let vertex = cx.pool.get(n).vertex;
-        cx.dropped.push(Dropped { vertex, ring: ring.input, reason: DropReason::RingSkipped });
+        cx.dropped.push(Dropped {
+            vertex,
+            ring: ring.input,
+            reason: DropReason::RingSkipped,
+        });
         n = cx.pool.next(n);
         if n == start {
             break;
@@ -134,7 +142,10 @@ fn depth_of(cx: &mut Context, b: usize) -> Result<u32, Error> {
         return Ok(0);
     }
     let node = cx.pool.get(first);
-    Err(Error::RingsOverlap { ring: cx.rings[b].input as usize, vertex: node.vertex as usize })
+    Err(Error::RingsOverlap {
+        ring: cx.rings[b].input as usize,
+        vertex: node.vertex as usize,
+    })
 }
 
 /// The depth of ring `b` decided at its node `v`, or `None` when a ring passing through
@@ -158,7 +169,11 @@ fn depth_at(cx: &mut Context, b: usize, v: NodeId) -> Option<u32> {
     for n in cx.bands.query(pv.y, pv.y) {
         let node = cx.pool.get(n);
         let ring = node.ring;
-        if ring as usize == b || node.removed || !cx.rings[ring as usize].alive || touching.contains(&ring) {
+        if ring as usize == b
+            || node.removed
+            || !cx.rings[ring as usize].alive
+            || touching.contains(&ring)
+        {
             continue;
         }
         winding += crossing(node.p, cx.pool.p(node.next), pv);
@@ -200,7 +215,9 @@ fn locally_inside(cx: &Context, v: NodeId, r: usize) -> Option<bool> {
         let next = cx.pool.p(node.next);
         if node.p == pv {
             let prev = cx.pool.p(node.prev);
-            match corner_contains(pv, next, prev, vn).or_else(|| corner_contains(pv, next, prev, vp)) {
+            match corner_contains(pv, next, prev, vn)
+                .or_else(|| corner_contains(pv, next, prev, vp))
+            {
                 Some(true) => inside = true,
                 Some(false) => {}
                 // b's edges run along both of r's: complementary corners are disjoint,
@@ -222,14 +239,20 @@ fn locally_inside(cx: &Context, v: NodeId, r: usize) -> Option<bool> {
 pub(crate) fn corner_contains(o: Point, a: Point, b: Point, q: Point) -> Option<bool> {
     let qa = orient2d(o, a, q);
     let qb = orient2d(o, b, q);
-    if (qa == Orientation::Collinear && same_ray(o, a, q)) || (qb == Orientation::Collinear && same_ray(o, b, q)) {
+    if (qa == Orientation::Collinear && same_ray(o, a, q))
+        || (qb == Orientation::Collinear && same_ray(o, b, q))
+    {
         return None;
     }
     let inside = match orient2d(o, a, b) {
         // convex corner: left of o→a and right of o→b
-        Orientation::CounterClockwise => qa == Orientation::CounterClockwise && qb == Orientation::Clockwise,
+        Orientation::CounterClockwise => {
+            qa == Orientation::CounterClockwise && qb == Orientation::Clockwise
+        }
         // reflex corner: the complement of the convex corner from o→b to o→a
-        Orientation::Clockwise => qa == Orientation::CounterClockwise || qb == Orientation::Clockwise,
+        Orientation::Clockwise => {
+            qa == Orientation::CounterClockwise || qb == Orientation::Clockwise
+        }
         // straight corner (a, o, b on a line, opposite rays): the left half-plane of o→a;
         // a zero-width corner (same ray) contains nothing
         Orientation::Collinear => !same_ray(o, a, b) && qa == Orientation::CounterClockwise,
@@ -257,16 +280,40 @@ mod tests {
     fn corner_tests() {
         let o = p(0., 0.);
         // convex corner from +x to +y
-        assert_eq!(corner_contains(o, p(1., 0.), p(0., 1.), p(1., 1.)), Some(true));
-        assert_eq!(corner_contains(o, p(1., 0.), p(0., 1.), p(-1., -1.)), Some(false));
+        assert_eq!(
+            corner_contains(o, p(1., 0.), p(0., 1.), p(1., 1.)),
+            Some(true)
+        );
+        assert_eq!(
+            corner_contains(o, p(1., 0.), p(0., 1.), p(-1., -1.)),
+            Some(false)
+        );
         assert_eq!(corner_contains(o, p(1., 0.), p(0., 1.), p(2., 0.)), None);
         // reflex corner from +y to +x (270°)
-        assert_eq!(corner_contains(o, p(0., 1.), p(1., 0.), p(-1., -1.)), Some(true));
-        assert_eq!(corner_contains(o, p(0., 1.), p(1., 0.), p(1., 1.)), Some(false));
-        assert_eq!(corner_contains(o, p(0., 1.), p(1., 0.), p(-1., 0.)), Some(true));
-        assert_eq!(corner_contains(o, p(0., 1.), p(1., 0.), p(0., -1.)), Some(true));
+        assert_eq!(
+            corner_contains(o, p(0., 1.), p(1., 0.), p(-1., -1.)),
+            Some(true)
+        );
+        assert_eq!(
+            corner_contains(o, p(0., 1.), p(1., 0.), p(1., 1.)),
+            Some(false)
+        );
+        assert_eq!(
+            corner_contains(o, p(0., 1.), p(1., 0.), p(-1., 0.)),
+            Some(true)
+        );
+        assert_eq!(
+            corner_contains(o, p(0., 1.), p(1., 0.), p(0., -1.)),
+            Some(true)
+        );
         // straight corner from +x to -x: the upper half-plane
-        assert_eq!(corner_contains(o, p(1., 0.), p(-1., 0.), p(0., 1.)), Some(true));
-        assert_eq!(corner_contains(o, p(1., 0.), p(-1., 0.), p(0., -1.)), Some(false));
+        assert_eq!(
+            corner_contains(o, p(1., 0.), p(-1., 0.), p(0., 1.)),
+            Some(true)
+        );
+        assert_eq!(
+            corner_contains(o, p(1., 0.), p(-1., 0.), p(0., -1.)),
+            Some(false)
+        );
     }
 }

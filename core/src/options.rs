@@ -52,7 +52,11 @@ pub struct Options {
 impl Options {
     /// The defaults: fast, automatic nesting, strict.
     pub const fn new() -> Self {
-        Options { strategy: Strategy::Fast, nesting: Nesting::Auto, lenient: false }
+        Options {
+            strategy: Strategy::Fast,
+            nesting: Nesting::Auto,
+            lenient: false,
+        }
     }
 
     /// Sets the ear-clipping strategy.

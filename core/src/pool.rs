@@ -155,7 +155,7 @@ impl Pool {
         let bp = self.prev(b);
         let a2 = self.copy_after(a, a); // a → a2 → an
         let b2 = self.copy_after(b, bp); // bp → b2 → b
-        // a2 takes over a's edge; the two bridge edges cross nothing
+                                         // a2 takes over a's edge; the two bridge edges cross nothing
         self.get_mut(a).crossed = false;
         self.get_mut(b2).crossed = false;
         // a → b, b2 → a2
@@ -186,7 +186,11 @@ impl Pool {
 
     /// Iterates the ring through `start`, beginning there.
     pub fn ring(&self, start: NodeId) -> RingIter<'_> {
-        RingIter { pool: self, start, cur: Some(start) }
+        RingIter {
+            pool: self,
+            start,
+            cur: Some(start),
+        }
     }
 }
 
@@ -212,7 +216,10 @@ mod tests {
     use super::*;
 
     fn square(pool: &mut Pool) -> NodeId {
-        for (i, (x, y)) in [(0., 0.), (1., 0.), (1., 1.), (0., 1.)].into_iter().enumerate() {
+        for (i, (x, y)) in [(0., 0.), (1., 0.), (1., 1.), (0., 1.)]
+            .into_iter()
+            .enumerate()
+        {
             pool.push(Point::new(x, y), i as u32, 0);
         }
         pool.link_run(0, 4);

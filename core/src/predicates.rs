@@ -131,9 +131,18 @@ mod tests {
 
     #[test]
     fn orientation_signs() {
-        assert_eq!(orient2d(p(0., 0.), p(1., 0.), p(0., 1.)), Orientation::CounterClockwise);
-        assert_eq!(orient2d(p(0., 0.), p(0., 1.), p(1., 0.)), Orientation::Clockwise);
-        assert_eq!(orient2d(p(0., 0.), p(1., 1.), p(2., 2.)), Orientation::Collinear);
+        assert_eq!(
+            orient2d(p(0., 0.), p(1., 0.), p(0., 1.)),
+            Orientation::CounterClockwise
+        );
+        assert_eq!(
+            orient2d(p(0., 0.), p(0., 1.), p(1., 0.)),
+            Orientation::Clockwise
+        );
+        assert_eq!(
+            orient2d(p(0., 0.), p(1., 1.), p(2., 2.)),
+            Orientation::Collinear
+        );
     }
 
     #[test]

@@ -36,7 +36,10 @@ pub(crate) fn join(cx: &mut Context) -> usize {
         }
         retrace(cx);
     }
-    cx.rings.iter().filter(|r| r.alive && r.depth % 2 == 1).count()
+    cx.rings
+        .iter()
+        .filter(|r| r.alive && r.depth % 2 == 1)
+        .count()
 }
 
 /// Whether node `n` is part of the triangulation's input still.

@@ -129,7 +129,8 @@ fn run<T: Coord>(
     let holes = touch::join(cx);
     if cx.lenient && !cx.crossings.is_empty() {
         cx.starts.clear();
-        cx.starts.extend(cx.rings.iter().filter(|r| r.alive).map(|r| r.start));
+        cx.starts
+            .extend(cx.rings.iter().filter(|r| r.alive).map(|r| r.start));
         validate::mark_crossed(&mut cx.pool, &cx.starts, &mut cx.edges);
     }
     bridge::bridge(cx)?;
@@ -159,7 +160,8 @@ fn clip_best_effort<T: Coord>(
     let plain = deviation(cx.area, vertices, out);
     // keep the first try's repairs aside, restore the rings, try again
     cx.saved_repairs.clear();
-    cx.saved_repairs.extend_from_slice(&cx.repairs[repairs_before..]);
+    cx.saved_repairs
+        .extend_from_slice(&cx.repairs[repairs_before..]);
     cx.repairs.truncate(repairs_before);
     cx.pool.nodes.clear();
     cx.pool.nodes.extend_from_slice(&cx.saved_nodes);
@@ -168,9 +170,15 @@ fn clip_best_effort<T: Coord>(
     let mut alt = core::mem::take(&mut cx.alt_out);
     alt.clear();
     let result = clip::clip(cx, strategy, true, &mut alt);
-    let deferred = if result.is_ok() { deviation(cx.area, vertices, &alt) } else { f64::INFINITY };
+    let deferred = if result.is_ok() {
+        deviation(cx.area, vertices, &alt)
+    } else {
+        f64::INFINITY
+    };
     if deferred < plain {
-        core::mem::swap(out, &mut alt);
+        // copy, not swap: the caller's buffer keeps its capacity
+        out.clear();
+        out.extend_from_slice(&alt);
     } else {
         cx.repairs.truncate(repairs_before);
         cx.repairs.extend_from_slice(&cx.saved_repairs);
@@ -182,7 +190,10 @@ fn clip_best_effort<T: Coord>(
 /// earcut's deviation of triangles from an area, in floating point (a heuristic measure).
 fn deviation<T: Coord>(area: f64, vertices: &[[T; 2]], triangles: &[[u32; 3]]) -> f64 {
     let p = |i: u32| {
-        let v = vertices.get(i as usize).copied().map(|v| [v[0].to_f64(), v[1].to_f64()]);
+        let v = vertices
+            .get(i as usize)
+            .copied()
+            .map(|v| [v[0].to_f64(), v[1].to_f64()]);
         let [x, y] = v.unwrap_or([0.0, 0.0]);
         crate::predicates::Point::new(x, y)
     };
@@ -204,7 +215,11 @@ fn signed_area(cx: &Context) -> f64 {
         for n in cx.pool.ring(ring.start) {
             s += crate::predicates::approx_cross(cx.pool.p(n), cx.pool.p(cx.pool.next(n)));
         }
-        total += if ring.depth % 2 == 0 { s.abs() } else { -s.abs() };
+        total += if ring.depth % 2 == 0 {
+            s.abs()
+        } else {
+            -s.abs()
+        };
     }
     total
 }
@@ -243,7 +258,10 @@ impl<T: Coord> Default for Triangulator<T> {
 impl<T: Coord> Triangulator<T> {
     /// A triangulator with empty buffers; they grow on first use and are kept.
     pub fn new() -> Self {
-        Triangulator { cx: Context::default(), _coord: PhantomData }
+        Triangulator {
+            cx: Context::default(),
+            _coord: PhantomData,
+        }
     }
 
     /// Triangulates the rings given by `vertices` and `ring_starts`.
@@ -283,7 +301,9 @@ impl<T: Coord> Triangulator<T> {
             match second {
                 Ok(counts) if deviation(cx.area, vertices, &alt) < first => {
                     (polygons, holes) = counts;
-                    core::mem::swap(out, &mut alt);
+                    // copy, not swap: the caller's buffer keeps its capacity
+                    out.clear();
+                    out.extend_from_slice(&alt);
                 }
                 _ => {
                     cx.dropped.clear();

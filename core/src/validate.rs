@@ -1051,8 +1051,16 @@ pub(crate) fn mark_crossed(pool: &mut Pool, starts: &[NodeId], edges: &mut Vec<N
                 continue;
             }
             let (m, n) = (edges[i], edges[j]);
-            let s = Seg { edge: m, l: pool.p(m), r: pool.p(pool.next(m)) };
-            let t = Seg { edge: n, l: pool.p(n), r: pool.p(pool.next(n)) };
+            let s = Seg {
+                edge: m,
+                l: pool.p(m),
+                r: pool.p(pool.next(m)),
+            };
+            let t = Seg {
+                edge: n,
+                l: pool.p(n),
+                r: pool.p(pool.next(n)),
+            };
             if properly_cross(&s, &t) {
                 pool.get_mut(m).crossed = true;
                 pool.get_mut(n).crossed = true;

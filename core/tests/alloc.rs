@@ -1,0 +1,150 @@
+//! A warmed-up `Triangulator` allocates nothing: the second call on the same input, with the
+//! same output `Vec`, makes zero allocations — for both strategies and both precisions.
+//!
+//! Only this test binary installs the counting allocator. It counts allocations made by the
+//! current thread while counting is switched on, so the test harness's own threads do not
+//! disturb the count.
+
+mod common;
+
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::cell::Cell;
+
+use common::{flatten, read_json, rings_from_json, shapes_from_json, to_f32, Flat, Rings};
+use polytri::{Nesting, Options, Strategy, Triangulator};
+
+struct Counting;
+
+thread_local! {
+    static COUNTING: Cell<bool> = const { Cell::new(false) };
+    static COUNT: Cell<usize> = const { Cell::new(0) };
+}
+
+fn note_allocation() {
+    // `try_with`: the thread-locals may be gone while a thread shuts down.
+    let _ = COUNTING.try_with(|on| {
+        if on.get() {
+            let _ = COUNT.try_with(|c| c.set(c.get() + 1));
+        }
+    });
+}
+
+// SAFETY: every call is forwarded unchanged to `System`; the bookkeeping only touches
+// const-initialised thread-locals, which never allocate.
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        note_allocation();
+        System.alloc(layout)
+    }
+    unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
+        note_allocation();
+        System.alloc_zeroed(layout)
+    }
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        note_allocation();
+        System.realloc(ptr, layout, new_size)
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        System.dealloc(ptr, layout)
+    }
+}
+
+#[global_allocator]
+static ALLOCATOR: Counting = Counting;
+
+/// Allocations made by `f` on this thread.
+fn allocations<R>(f: impl FnOnce() -> R) -> (usize, R) {
+    COUNT.with(|c| c.set(0));
+    COUNTING.with(|on| on.set(true));
+    let r = f();
+    COUNTING.with(|on| on.set(false));
+    (COUNT.with(|c| c.get()), r)
+}
+
+fn inputs() -> Vec<(String, Flat, Nesting)> {
+    let mut v = Vec::new();
+    let shapes = shapes_from_json(&read_json("datasets/rect_circles.json"));
+    let all: Rings = shapes.into_iter().flatten().collect();
+    v.push(("rect_circles".to_string(), flatten(&all), Nesting::Auto));
+    for name in [
+        "water",
+        "dude",
+        "eberly-6",
+        "touching-holes",
+        "issue83",
+        "steiner",
+    ] {
+        let rings = rings_from_json(&read_json(&format!("earcut/fixtures/{name}.json")));
+        v.push((name.to_string(), flatten(&rings), Nesting::FirstIsOuter));
+    }
+    v
+}
+
+#[test]
+fn warmed_up_triangulator_does_not_allocate() {
+    let mut failures = Vec::new();
+    let mut tri64 = Triangulator::<f64>::new();
+    let mut tri32 = Triangulator::<f32>::new();
+    let mut out: Vec<[u32; 3]> = Vec::new();
+    // Warm up on every input first, so buffers have grown to the largest size.
+    let inputs = inputs();
+    for strategy in [Strategy::Fast, Strategy::Quality] {
+        for (name, flat, nesting) in &inputs {
+            let opts = Options::default()
+                .with_strategy(strategy)
+                .with_nesting(*nesting)
+                .with_lenient(true);
+            let v32 = to_f32(&flat.vertices);
+            let warm64 = tri64
+                .triangulate(&flat.vertices, &flat.ring_starts, &opts, &mut out)
+                .map(|r| r.triangles);
+            let first64 = out.clone();
+            let (n64, again64) = allocations(|| {
+                tri64
+                    .triangulate(&flat.vertices, &flat.ring_starts, &opts, &mut out)
+                    .map(|r| r.triangles)
+            });
+            if n64 != 0 {
+                failures.push(format!(
+                    "{name} {strategy:?} f64: {n64} allocation(s) on the second call"
+                ));
+            }
+            if warm64 != again64 || first64 != out {
+                failures.push(format!(
+                    "{name} {strategy:?} f64: second call gave a different result"
+                ));
+            }
+            let _ = tri32.triangulate(&v32, &flat.ring_starts, &opts, &mut out);
+            let (n32, _) = allocations(|| {
+                tri32
+                    .triangulate(&v32, &flat.ring_starts, &opts, &mut out)
+                    .map(|r| r.triangles)
+            });
+            if n32 != 0 {
+                failures.push(format!(
+                    "{name} {strategy:?} f32: {n32} allocation(s) on the second call"
+                ));
+            }
+        }
+    }
+    // And once more over all inputs in turn: buffers already large enough, nothing grows.
+    for (name, flat, nesting) in &inputs {
+        let opts = Options::default().with_nesting(*nesting).with_lenient(true);
+        let (n, _) = allocations(|| {
+            tri64
+                .triangulate(&flat.vertices, &flat.ring_starts, &opts, &mut out)
+                .map(|r| r.triangles)
+        });
+        if n != 0 {
+            failures.push(format!(
+                "{name} Fast f64 after other inputs: {n} allocation(s)"
+            ));
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} failure(s):\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
+}

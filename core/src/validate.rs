@@ -350,6 +350,57 @@ impl Sweep<'_> {
     }
 }
 
+/// Lenient mode, after the sweep saw a crossing: flags every edge (by its start node) that
+/// properly crosses another edge of the rings through `starts`. The sweep stops being exact
+/// after its first crossing; this pass is exact and complete. It compares only edges whose
+/// x-ranges overlap, in order of their left ends, so it costs about n times the number of
+/// edges spanning a vertical line.
+pub(crate) fn mark_crossed(pool: &mut Pool, starts: &[NodeId], edges: &mut Vec<NodeId>) {
+    edges.clear();
+    for &s in starts {
+        let mut n = s;
+        for _ in 0..pool.len() {
+            edges.push(n);
+            n = pool.next(n);
+            if n == s {
+                break;
+            }
+        }
+    }
+    let span = |pool: &Pool, n: NodeId| {
+        let (a, b) = (pool.p(n), pool.p(pool.next(n)));
+        (a.x.min(b.x), a.x.max(b.x), a.y.min(b.y), a.y.max(b.y))
+    };
+    edges.sort_unstable_by(|&m, &n| span(pool, m).0.total_cmp(&span(pool, n).0));
+    for i in 0..edges.len() {
+        let (_, x1, y0, y1) = span(pool, edges[i]);
+        for j in i + 1..edges.len() {
+            let (u0, _, v0, v1) = span(pool, edges[j]);
+            if u0 > x1 {
+                break;
+            }
+            if v0 > y1 || v1 < y0 {
+                continue;
+            }
+            let (m, n) = (edges[i], edges[j]);
+            let s = Seg {
+                edge: m,
+                l: pool.p(m),
+                r: pool.p(pool.next(m)),
+            };
+            let t = Seg {
+                edge: n,
+                l: pool.p(n),
+                r: pool.p(pool.next(n)),
+            };
+            if properly_cross(&s, &t) {
+                pool.get_mut(m).crossed = true;
+                pool.get_mut(n).crossed = true;
+            }
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -1015,56 +1066,5 @@ mod tests {
         let ring = tidy(ring).unwrap_or_default();
         let (_, found) = sweep_rings(&[ring, vec![(-5., -5.), (5., -5.), (5., 5.), (-5., 5.)]]);
         assert!(found.crossings.is_empty());
-    }
-}
-
-/// Lenient mode, after the sweep saw a crossing: flags every edge (by its start node) that
-/// properly crosses another edge of the rings through `starts`. The sweep stops being exact
-/// after its first crossing; this pass is exact and complete. It compares only edges whose
-/// x-ranges overlap, in order of their left ends, so it costs about n times the number of
-/// edges spanning a vertical line.
-pub(crate) fn mark_crossed(pool: &mut Pool, starts: &[NodeId], edges: &mut Vec<NodeId>) {
-    edges.clear();
-    for &s in starts {
-        let mut n = s;
-        for _ in 0..pool.len() {
-            edges.push(n);
-            n = pool.next(n);
-            if n == s {
-                break;
-            }
-        }
-    }
-    let span = |pool: &Pool, n: NodeId| {
-        let (a, b) = (pool.p(n), pool.p(pool.next(n)));
-        (a.x.min(b.x), a.x.max(b.x), a.y.min(b.y), a.y.max(b.y))
-    };
-    edges.sort_unstable_by(|&m, &n| span(pool, m).0.total_cmp(&span(pool, n).0));
-    for i in 0..edges.len() {
-        let (_, x1, y0, y1) = span(pool, edges[i]);
-        for j in i + 1..edges.len() {
-            let (u0, _, v0, v1) = span(pool, edges[j]);
-            if u0 > x1 {
-                break;
-            }
-            if v0 > y1 || v1 < y0 {
-                continue;
-            }
-            let (m, n) = (edges[i], edges[j]);
-            let s = Seg {
-                edge: m,
-                l: pool.p(m),
-                r: pool.p(pool.next(m)),
-            };
-            let t = Seg {
-                edge: n,
-                l: pool.p(n),
-                r: pool.p(pool.next(n)),
-            };
-            if properly_cross(&s, &t) {
-                pool.get_mut(m).crossed = true;
-                pool.get_mut(n).crossed = true;
-            }
-        }
     }
 }

@@ -219,6 +219,75 @@ fn paper_cases_are_triangulated_validly() {
 // corpus/datasets
 // ------------------------------------------------------------------------------------------
 
+/// Per ring, how many distinct positions of other vertices lie strictly inside its edges
+/// (T-junctions, where shapes touch). Exact test with `robust`; a uniform grid of cells
+/// about one mean edge long keeps it near-linear.
+fn t_junctions(vertices: &[[f64; 2]], ring_starts: &[usize]) -> Vec<usize> {
+    let n = vertices.len();
+    let rings = ring_starts.len();
+    let edges: Vec<(usize, usize, usize)> = (0..rings)
+        .flat_map(|k| {
+            let (s, e) = (ring_starts[k], ring_starts.get(k + 1).copied().unwrap_or(n));
+            (s..e).map(move |i| (k, i, if i + 1 == e { s } else { i + 1 }))
+        })
+        .collect();
+    let (mut x0, mut y0, mut x1, mut y1) = (f64::MAX, f64::MAX, f64::MIN, f64::MIN);
+    let mut total = 0.0;
+    for &[x, y] in vertices {
+        (x0, y0, x1, y1) = (x0.min(x), y0.min(y), x1.max(x), y1.max(y));
+    }
+    for &(_, a, b) in &edges {
+        let (p, q) = (vertices[a], vertices[b]);
+        total += (q[0] - p[0]).abs() + (q[1] - p[1]).abs();
+    }
+    let cell = (total / edges.len().max(1) as f64).max(1e-9);
+    let nx = (((x1 - x0) / cell) as usize + 1).min(4096);
+    let ny = (((y1 - y0) / cell) as usize + 1).min(4096);
+    let at = |x: f64, y: f64| {
+        let i = (((x - x0) / cell) as usize).min(nx - 1);
+        let j = (((y - y0) / cell) as usize).min(ny - 1);
+        (i, j)
+    };
+    let mut grid: HashMap<(usize, usize), Vec<usize>> = HashMap::new();
+    for (v, &[x, y]) in vertices.iter().enumerate() {
+        grid.entry(at(x, y)).or_default().push(v);
+    }
+    let mut inserted = vec![0; rings];
+    for &(k, a, b) in &edges {
+        let (p, q) = (vertices[a], vertices[b]);
+        let (lo, hi) = (
+            at(p[0].min(q[0]), p[1].min(q[1])),
+            at(p[0].max(q[0]), p[1].max(q[1])),
+        );
+        let mut found: Vec<[u64; 2]> = Vec::new();
+        for i in lo.0..=hi.0 {
+            for j in lo.1..=hi.1 {
+                for &v in grid.get(&(i, j)).into_iter().flatten() {
+                    let r = vertices[v];
+                    if r == p || r == q {
+                        continue;
+                    }
+                    let inside_box = r[0] >= p[0].min(q[0])
+                        && r[0] <= p[0].max(q[0])
+                        && r[1] >= p[1].min(q[1])
+                        && r[1] <= p[1].max(q[1]);
+                    let on_line = robust::orient2d(
+                        robust::Coord { x: p[0], y: p[1] },
+                        robust::Coord { x: q[0], y: q[1] },
+                        robust::Coord { x: r[0], y: r[1] },
+                    ) == 0.0;
+                    let key = [r[0].to_bits(), r[1].to_bits()];
+                    if inside_box && on_line && !found.contains(&key) {
+                        found.push(key);
+                    }
+                }
+            }
+        }
+        inserted[k] += found.len();
+    }
+    inserted
+}
+
 /// `INDEX.tsv`: file → (rings, holes, vertices, triangles).
 fn dataset_index() -> HashMap<String, [usize; 4]> {
     let text = std::fs::read_to_string(common::corpus_dir().join("datasets/INDEX.tsv"))
@@ -248,11 +317,26 @@ fn dataset_index() -> HashMap<String, [usize; 4]> {
 /// Σ over outer rings (kept − 2) + Σ over holes (kept + 2), rings with < 3 kept vertices
 /// left out. With nothing dropped this is Σ per polygon (n − 2 + 2h).
 fn expected_count(ring_starts: &[usize], n: usize, roles: &[Role], dropped: &[Dropped]) -> usize {
+    expected_count_with(ring_starts, n, roles, dropped, &[])
+}
+
+/// As [`expected_count`], plus `inserted[k]` vertices of other rings lying inside ring k's
+/// edges: the triangulator splits those edges there, so ring k gains that many vertices.
+fn expected_count_with(
+    ring_starts: &[usize],
+    n: usize,
+    roles: &[Role],
+    dropped: &[Dropped],
+    inserted: &[usize],
+) -> usize {
     let mut kept: Vec<usize> = (0..ring_starts.len())
         .map(|k| ring_starts.get(k + 1).copied().unwrap_or(n) - ring_starts[k])
         .collect();
     for d in dropped {
         kept[d.ring as usize] -= 1;
+    }
+    for (k, extra) in inserted.iter().enumerate() {
+        kept[k] += extra;
     }
     let mut count = 0isize;
     for (k, &role) in kept.iter().zip(roles) {
@@ -282,6 +366,8 @@ fn dataset(file: &str) {
         triangles_n,
         "{file}: INDEX triangles"
     );
+
+    let inserted = t_junctions(&flat.vertices, &flat.ring_starts);
 
     let mut failures = Vec::new();
     let mut notes = Vec::new();
@@ -324,8 +410,13 @@ fn dataset(file: &str) {
                         s.min_angle_deg
                     )),
                 }
-                let want =
-                    expected_count(&flat.ring_starts, flat.vertices.len(), &roles, &r.dropped);
+                let want = expected_count_with(
+                    &flat.ring_starts,
+                    flat.vertices.len(),
+                    &roles,
+                    &r.dropped,
+                    &inserted,
+                );
                 if r.triangles.len() != want {
                     failures.push(format!(
                         "{tag}: {} triangles, expected {want} (INDEX {triangles_n}, {} dropped)",

@@ -36,6 +36,9 @@ pub enum Format {
     GeoJson,
     /// Well-known text: POLYGON, MULTIPOLYGON and GEOMETRYCOLLECTION, any number per file.
     Wkt,
+    /// A corpus case: a JSON object whose `rings` are rings JSON, beside metadata (name,
+    /// description, source, expectations) that is ignored here.
+    Case,
 }
 
 impl fmt::Display for Format {
@@ -45,6 +48,7 @@ impl fmt::Display for Format {
             Format::Shapes => "shapes JSON",
             Format::GeoJson => "GeoJSON",
             Format::Wkt => "WKT",
+            Format::Case => "corpus case JSON",
         })
     }
 }
@@ -135,6 +139,9 @@ pub fn parse(text: &str, wkt: bool) -> Result<Input, String> {
     // position), then again typed, so that a bad coordinate is reported with its position.
     let value: Value = serde_json::from_str(text).map_err(|e| format!("invalid JSON: {e}"))?;
     match value {
+        Value::Object(ref map) if map.contains_key("rings") && !map.contains_key("type") => {
+            parse_case(text)
+        }
         Value::Object(_) => parse_geojson(text),
         Value::Array(ref items) => match items.iter().find_map(number_depth) {
             // The first number is x of a point, inside a ring, inside a polygon: depth 3 is
@@ -239,6 +246,18 @@ fn parse_shapes(text: &str) -> Result<Input, String> {
         serde_json::from_str(text).map_err(|e| format!("invalid shapes JSON: {e}"))?;
     let mut input = Input::new(Format::Shapes);
     input.polygons = shapes.into_iter().map(json_polygon).collect();
+    Ok(input)
+}
+
+fn parse_case(text: &str) -> Result<Input, String> {
+    #[derive(Deserialize)]
+    struct Case {
+        rings: JsonRings,
+    }
+    let case: Case =
+        serde_json::from_str(text).map_err(|e| format!("invalid corpus case JSON: {e}"))?;
+    let mut input = Input::new(Format::Case);
+    input.polygons.push(json_polygon(case.rings));
     Ok(input)
 }
 
@@ -710,6 +729,19 @@ mod tests {
         assert!(parse("POLYGON ((0 0, 1 0, 1 1)", false).is_err());
         let deep = format!("GEOMETRYCOLLECTION {}", "(".repeat(1000));
         assert!(parse(&deep, false).is_err());
+    }
+
+    #[test]
+    fn corpus_cases_are_read_by_their_rings() {
+        let text = r#"{"name": "two squares", "expect": {"triangles": 8},
+            "rings": [[[0,0],[10,0],[10,10],[0,10]], [[3,3],[3,7],[7,7],[7,3]]]}"#;
+        let input = parse(text, false).unwrap();
+        assert_eq!(input.format, Format::Case);
+        assert_eq!(input.polygons.len(), 1);
+        assert_eq!(input.polygons[0].len(), 2);
+        assert_eq!(input.polygons[0][1][3], [7.0, 3.0]);
+        let err = parse(r#"{"rings": [[[0, "x"]]]}"#, false).unwrap_err();
+        assert!(err.starts_with("invalid corpus case JSON"), "{err}");
     }
 
     #[test]

@@ -30,10 +30,10 @@ pub(crate) fn load<T: Coord>(
         let end = loop {
             match ring_starts.get(k) {
                 None => break vertices.len(),
-                Some(&s) if s > start && s <= vertices.len() => break s,
+                Some(&s) if s > start && s < vertices.len() => break s,
                 Some(&s) => {
                     if !cx.lenient {
-                        return Err(if s > vertices.len() {
+                        return Err(if s >= vertices.len() {
                             Error::RingStartOutOfRange {
                                 ring: k,
                                 start: s,

@@ -25,13 +25,10 @@ const SELF_INTERSECTING: [&str; 6] = [
 ];
 
 /// Fixtures expecting no triangles from earcut: degenerate on purpose.
-const DEGENERATE: [&str; 5] = [
-    "degenerate",
-    "empty-square",
-    "issue83",
-    "issue107",
-    "infinite-loop-jhl",
-];
+// Not here: `infinite-loop-jhl`, whose hole leaves a sliver of exact area 1.5e-28 between
+// (0, 0) and (0, 1e-28). earcut rounds it away; polytri triangulates it (two triangles),
+// and `strict_accepts_valid_fixtures` checks them exactly.
+const DEGENERATE: [&str; 4] = ["degenerate", "empty-square", "issue83", "issue107"];
 
 fn fixture_names() -> Vec<String> {
     let expected = read_json("earcut/expected.json");

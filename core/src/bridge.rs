@@ -19,8 +19,9 @@
 //! one that has M on its inner side (Fig. 6a/b): with every ring's interior on the left,
 //! only upward edges with M strictly left of them count.
 //!
-//! All decisions are exact orientation tests. The searches use the band index of `grid`, so
-//! a hole costs about one band, not the whole polygon.
+//! All decisions are exact orientation tests. The searches use the edge grid of `grid`: the
+//! ray walks one row of cells from M and stops past its nearest hit, the triangle search
+//! looks at the cells of the triangle's box, so a hole costs a few cells, not the polygon.
 
 use core::cmp::Ordering;
 
@@ -150,9 +151,10 @@ enum Target {
     Visible(NodeId),
 }
 
-/// Lists the current edge starting at `n` in the band index again.
+/// Lists the current edge starting at `n` in the grid index again.
 fn register(cx: &mut Context, n: NodeId) {
-    cx.bands.insert(n, cx.pool.p(n), cx.pool.p(cx.pool.next(n)));
+    cx.edge_grid
+        .insert(n, cx.pool.p(n), cx.pool.p(cx.pool.next(n)));
 }
 
 /// Whether node `n` is on a ring that is merged already (and still linked).
@@ -169,7 +171,7 @@ fn is_merged(cx: &Context, n: NodeId) -> bool {
 fn find_touching(cx: &Context, m: NodeId) -> Option<NodeId> {
     let pm = cx.pool.p(m);
     let (mn, mp) = (cx.pool.p(cx.pool.next(m)), cx.pool.p(cx.pool.prev(m)));
-    cx.bands.query(pm.y, pm.y).find(|&x| {
+    cx.edge_grid.query(pm, pm).find(|&x| {
         if !is_merged(cx, x) || cx.pool.p(x) != pm {
             return false;
         }
@@ -204,27 +206,49 @@ fn find_bridge(cx: &Context, m: NodeId) -> Option<NodeId> {
 /// The nearest edge a → b hit by the ray from `pm` towards +x: among merged rings' edges,
 /// upward ones (a.y <= M.y <= b.y, a.y < b.y) with M strictly on their left, i.e. seen
 /// from the polygon's interior.
+///
+/// The ray walks the grid row of M column by column (the long edges and those listed for
+/// the whole row first). Every edge not seen yet lies wholly in later columns, so once the
+/// best hit's edge ends within the columns walked, no later edge can be hit nearer
+/// (columns are monotone in x), and the walk stops.
 fn nearest_hit(cx: &Context, pm: Point) -> Option<(NodeId, NodeId)> {
-    let mut best: Option<(NodeId, NodeId)> = None;
-    for a in cx.bands.query(pm.y, pm.y) {
-        if !is_merged(cx, a) {
-            continue;
+    let grid = &cx.edge_grid;
+    let mut best = None;
+    let row = grid.row(pm.y);
+    for a in grid.long().iter().copied().chain(grid.row_list(row)) {
+        consider_hit(cx, pm, a, &mut best);
+    }
+    for column in grid.column(pm.x)..grid.columns() {
+        for a in grid.cell(row, column).chain(grid.column_list(column)) {
+            consider_hit(cx, pm, a, &mut best);
         }
-        let b = cx.pool.next(a);
-        let (pa, pb) = (cx.pool.p(a), cx.pool.p(b));
-        if !(pa.y <= pm.y && pm.y <= pb.y && pa.y < pb.y && left_of(pa, pb, pm)) {
-            continue;
-        }
-        best = match best {
-            Some((c, d))
-                if compare_hits(pm.y, cx.pool.p(c), cx.pool.p(d), pa, pb) != Ordering::Less =>
-            {
-                Some((c, d))
+        if let Some((a, b)) = best {
+            if grid.column(cx.pool.p(a).x.max(cx.pool.p(b).x)) <= column {
+                break;
             }
-            _ => Some((a, b)),
-        };
+        }
     }
     best
+}
+
+/// Keeps the edge starting at `a` as `best` when the ray from `pm` hits it (see
+/// [`nearest_hit`]) nearer than `best`.
+fn consider_hit(cx: &Context, pm: Point, a: NodeId, best: &mut Option<(NodeId, NodeId)>) {
+    if !is_merged(cx, a) {
+        return;
+    }
+    let b = cx.pool.next(a);
+    let (pa, pb) = (cx.pool.p(a), cx.pool.p(b));
+    if !(pa.y <= pm.y && pm.y <= pb.y && pa.y < pb.y && left_of(pa, pb, pm)) {
+        return;
+    }
+    let nearer = match *best {
+        Some((c, d)) => compare_hits(pm.y, cx.pool.p(c), cx.pool.p(d), pa, pb) == Ordering::Less,
+        None => true,
+    };
+    if nearer {
+        *best = Some((a, b));
+    }
 }
 
 /// Compares where two upward edges a → b and c → d, both spanning height `y`, meet the
@@ -233,7 +257,7 @@ fn nearest_hit(cx: &Context, pm: Point) -> Option<(NodeId, NodeId)> {
 /// A point left of an upward line has a smaller x at the same height. If c and d lie on
 /// one side of the line through a, b, so does the hit of c → d; otherwise, for
 /// non-crossing edges, a and b lie on one side of the line through c, d.
-fn compare_hits(y: f64, a: Point, b: Point, c: Point, d: Point) -> Ordering {
+pub(crate) fn compare_hits(y: f64, a: Point, b: Point, c: Point, d: Point) -> Ordering {
     if let Some(ord) = side_of_line(y, a, b, c, d) {
         return ord;
     }
@@ -283,7 +307,9 @@ fn least_angle_in_triangle(
         Orientation::Clockwise
     };
     let mut best = p;
-    for r in cx.bands.query(ylo, yhi) {
+    let box_lo = Point::new(pm.x, ylo);
+    let box_hi = Point::new(pa.x.max(pb.x), yhi);
+    for r in cx.edge_grid.query(box_lo, box_hi) {
         let node = cx.pool.get(r);
         if node.removed || cx.rings[node.ring as usize].component != component {
             continue;
@@ -314,7 +340,7 @@ fn least_angle_in_triangle(
 /// direction towards M: the occurrence M can connect to without crossing its edges.
 fn visible_node_at(cx: &Context, target: Point, pm: Point, component: u32) -> Option<NodeId> {
     let mut fallback = None;
-    for x in cx.bands.query(target.y, target.y) {
+    for x in cx.edge_grid.query(target, target) {
         let node = cx.pool.get(x);
         if node.removed || node.p != target || cx.rings[node.ring as usize].component != component {
             continue;

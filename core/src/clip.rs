@@ -22,9 +22,7 @@
 //! A ring with no ear left is not a valid polygon (or this is a bug): strict mode reports an
 //! internal error, lenient mode cuts a best-effort triangle and says so.
 
-use std::cmp::Reverse;
-use std::collections::BinaryHeap;
-
+use crate::grid::Cells;
 use crate::nest::corner_contains;
 use crate::pool::NodeId;
 use crate::predicates::{approx_interior_angle, left_of, orient2d, within_box, Orientation, Point};
@@ -32,16 +30,86 @@ use crate::report::RepairKind;
 use crate::triangulator::Context;
 use crate::{Error, Strategy};
 
+/// Polygons with fewer reflex vertices than this scan them all in an ear test; more, and
+/// building the grid pays (earcut's threshold is 80 vertices in all).
+const GRID_MIN_REFLEX: usize = 32;
+
 /// Reusable buffers of the clip stage.
 #[derive(Debug, Default)]
 pub(crate) struct ClipScratch {
     /// Reflex (or straight) nodes of the polygon being clipped; entries go stale when a node
     /// turns convex or is cut, and are skipped then.
     reflex: Vec<NodeId>,
+    /// The same nodes by grid cell, when there are many (see `GRID_MIN_REFLEX`).
+    cells: Cells,
     /// Quality strategy: candidate ears by angle at the tip, with the node's stamp.
-    heap: BinaryHeap<Reverse<(u64, NodeId, u32)>>,
+    heap: EarQueue,
     /// Rings still to clip: pieces of a polygon split by a diagonal (lenient fallback).
     pending: Vec<NodeId>,
+    /// Edge tests the lenient split search may still spend in this `clip` call. One budget
+    /// for the whole call, not one per split: on garbage input every stuck piece tries a
+    /// split, and a per-split budget multiplied by the number of pieces is unbounded in
+    /// practice (seconds on a hundred vertices).
+    split_budget: usize,
+}
+
+/// The quality strategy's queue of candidate ears: (angle key, node, stamp), smallest
+/// first. A 4-ary heap: popping from a queue of a million ears touches half as many levels
+/// as a binary heap, and a node's four children share a cache line. Entries are totally
+/// ordered (equal ones are identical), so the pop order is that of any priority queue.
+#[derive(Debug, Default)]
+struct EarQueue {
+    items: Vec<(u64, NodeId, u32)>,
+}
+
+impl EarQueue {
+    fn clear(&mut self) {
+        self.items.clear();
+    }
+
+    fn push(&mut self, item: (u64, NodeId, u32)) {
+        let mut i = self.items.len();
+        self.items.push(item);
+        while i > 0 {
+            let parent = (i - 1) / 4;
+            if self.items[parent] <= item {
+                break;
+            }
+            self.items[i] = self.items[parent];
+            i = parent;
+        }
+        self.items[i] = item;
+    }
+
+    fn pop(&mut self) -> Option<(u64, NodeId, u32)> {
+        let last = self.items.pop()?;
+        let Some(&top) = self.items.first() else {
+            return Some(last);
+        };
+        // sift `last` down from the root
+        let len = self.items.len();
+        let mut i = 0;
+        loop {
+            let first = 4 * i + 1;
+            if first >= len {
+                break;
+            }
+            let end = (first + 4).min(len);
+            let mut child = first;
+            for c in first + 1..end {
+                if self.items[c] < self.items[child] {
+                    child = c;
+                }
+            }
+            if last <= self.items[child] {
+                break;
+            }
+            self.items[i] = self.items[child];
+            i = child;
+        }
+        self.items[i] = last;
+        Some(top)
+    }
 }
 
 /// One polygon being clipped.
@@ -54,10 +122,16 @@ struct Clipper<'a> {
     reflex_count: usize,
     /// The fan shortcut failed once (a degenerate ring): don't try again.
     no_fan: bool,
+    /// Ear tests ask `cx.clip.cells` for candidates rather than scanning `cx.clip.reflex`.
+    indexed: bool,
     /// Lenient mode with crossing edges: ears using a crossed edge wait until nothing else
     /// can be cut, so that overlaps stay where the input crosses itself.
     avoid_crossed: bool,
 }
+
+/// Edge tests the lenient split search may spend per `clip` call (see
+/// `ClipScratch::split_budget`): a few milliseconds.
+const SPLIT_BUDGET: usize = 1 << 22;
 
 /// Clips every polygon; returns how many there were.
 /// With `avoid_crossed`, ears at edges flagged as crossing wait until nothing else can be
@@ -69,6 +143,7 @@ pub(crate) fn clip(
     out: &mut Vec<[u32; 3]>,
 ) -> Result<usize, Error> {
     let mut polygons = 0;
+    cx.clip.split_budget = SPLIT_BUDGET;
     for r in 0..cx.rings.len() {
         let ring = cx.rings[r];
         if !ring.alive || !ring.merged || ring.component != r as u32 {
@@ -115,6 +190,11 @@ impl<'a> Clipper<'a> {
             }
         }
         let reflex_count = cx.clip.reflex.len();
+        let indexed = reflex_count >= GRID_MIN_REFLEX;
+        if indexed {
+            let (pool, clip) = (&cx.pool, &mut cx.clip);
+            clip.cells.build(&clip.reflex, |n| pool.p(n), pool.len());
+        }
         (
             Clipper {
                 cx,
@@ -122,6 +202,7 @@ impl<'a> Clipper<'a> {
                 len,
                 reflex_count,
                 no_fan: false,
+                indexed,
                 avoid_crossed,
             },
             start,
@@ -146,6 +227,9 @@ impl<'a> Clipper<'a> {
                     } else {
                         self.cx.pool.next(next)
                     };
+                    // `cut` may have tidied away both neighbours: the walk must start, and
+                    // stop, at a live node or it never comes round to `stop`
+                    ear = self.live(ear);
                     stop = ear;
                     continue;
                 }
@@ -154,6 +238,7 @@ impl<'a> Clipper<'a> {
             ear = self.cx.pool.next(ear);
             if ear == stop {
                 ear = self.stuck(ear)?;
+                ear = self.live(ear);
                 stop = ear;
             }
         }
@@ -167,7 +252,7 @@ impl<'a> Clipper<'a> {
         self.seed_heap(start);
         let mut last = start;
         while self.len > 3 {
-            let Some(Reverse((_, n, stamp))) = self.cx.clip.heap.pop() else {
+            let Some((_, n, stamp)) = self.cx.clip.heap.pop() else {
                 if self.avoid_crossed {
                     // only ears at crossed edges are left: allow them, look again
                     self.avoid_crossed = false;
@@ -191,9 +276,12 @@ impl<'a> Clipper<'a> {
                     self.push_if_ear(m);
                 }
             }
-            if self.cx.pool.get(last).removed {
-                last = prev;
-            }
+            // `cut` may have tidied away both neighbours of the ear
+            last = self.live(if self.cx.pool.get(last).removed {
+                prev
+            } else {
+                last
+            });
         }
         self.finish(last);
         Ok(())
@@ -217,7 +305,7 @@ impl<'a> Clipper<'a> {
         // positive angles order like their bit patterns
         let key = approx_interior_angle(a, b, c).to_bits();
         let stamp = self.cx.pool.get(n).stamp;
-        self.cx.clip.heap.push(Reverse((key, n, stamp)));
+        self.cx.clip.heap.push((key, n, stamp));
     }
 
     /// Positions of `n`'s predecessor, `n` and its successor.
@@ -230,29 +318,46 @@ impl<'a> Clipper<'a> {
     fn is_ear(&self, ear: NodeId) -> bool {
         let pool = &self.cx.pool;
         let (an, cn) = (pool.prev(ear), pool.next(ear));
-        let (a, b, c) = (pool.p(an), pool.p(ear), pool.p(cn));
-        if orient2d(a, b, c) != Orientation::CounterClockwise {
+        // `reflex` is the exact turn at the tip, kept up to date by `reclassify`
+        if pool.get(ear).reflex {
             return false;
         }
+        let (a, b, c) = (pool.p(an), pool.p(ear), pool.p(cn));
         if self.avoid_crossed && (pool.get(an).crossed || pool.get(ear).crossed) {
             return false;
         }
-        let (x0, x1) = (a.x.min(b.x).min(c.x), a.x.max(b.x).max(c.x));
-        let (y0, y1) = (a.y.min(b.y).min(c.y), a.y.max(b.y).max(c.y));
-        for &r in &self.cx.clip.reflex {
+        !self.any_reflex_near(a, b, c, |r| {
+            r != an && r != ear && r != cn && interferes(pool, r, a, b, c)
+        })
+    }
+
+    /// Whether `test` holds for a live reflex node in the bounding box of a, b, c.
+    fn any_reflex_near(
+        &self,
+        a: Point,
+        b: Point,
+        c: Point,
+        mut test: impl FnMut(NodeId) -> bool,
+    ) -> bool {
+        let pool = &self.cx.pool;
+        let lo = Point::new(a.x.min(b.x).min(c.x), a.y.min(b.y).min(c.y));
+        let hi = Point::new(a.x.max(b.x).max(c.x), a.y.max(b.y).max(c.y));
+        let mut candidate = |r: NodeId| {
             let node = pool.get(r);
-            if node.removed || !node.reflex || r == an || r == ear || r == cn {
-                continue;
-            }
             let q = node.p;
-            if q.x < x0 || q.x > x1 || q.y < y0 || q.y > y1 {
-                continue;
-            }
-            if interferes(pool, r, a, b, c) {
-                return false;
-            }
+            !node.removed
+                && node.reflex
+                && q.x >= lo.x
+                && q.x <= hi.x
+                && q.y >= lo.y
+                && q.y <= hi.y
+                && test(r)
+        };
+        if self.indexed {
+            self.cx.clip.cells.any_in_box(lo, hi, candidate)
+        } else {
+            self.cx.clip.reflex.iter().any(|&r| candidate(r))
         }
-        true
     }
 
     /// Cuts the ear at `ear`, tidies its neighbours; returns the successor.
@@ -270,6 +375,20 @@ impl<'a> Clipper<'a> {
         }
     }
 
+    /// `n` if it is live, else the first live node its links lead to: a removed node keeps
+    /// the links it had when it was unlinked, to nodes that were live then, so following
+    /// them reaches the ring (bounded by the pool size, in case nothing is left).
+    fn live(&self, mut n: NodeId) -> NodeId {
+        let pool = &self.cx.pool;
+        for _ in 0..pool.len() {
+            if !pool.get(n).removed {
+                break;
+            }
+            n = pool.next(n);
+        }
+        n
+    }
+
     /// Writes the triangle a, b, c.
     fn emit(&mut self, a: NodeId, b: NodeId, c: NodeId) {
         let pool = &self.cx.pool;
@@ -281,6 +400,7 @@ impl<'a> Clipper<'a> {
     fn unlink(&mut self, n: NodeId) {
         if self.cx.pool.get(n).reflex {
             self.reflex_count -= 1;
+            self.unindex(n);
         }
         self.cx.pool.remove(n);
         self.len -= 1;
@@ -289,6 +409,7 @@ impl<'a> Clipper<'a> {
     /// After a neighbour was cut: drop `n` if it repeats its successor's position or is the
     /// tip of a zero-width wall whose both sides are done, then reclassify what is left.
     fn tidy(&mut self, mut n: NodeId) {
+        let mut dropped = false;
         while self.len > 2 && !self.cx.pool.get(n).removed {
             let (prev, next) = (self.cx.pool.prev(n), self.cx.pool.next(n));
             let (pp, pn, px) = (
@@ -306,6 +427,13 @@ impl<'a> Clipper<'a> {
             } else {
                 break;
             }
+            dropped = true;
+        }
+        if !dropped {
+            // only n's own turn changed (its neighbour on the cut side is new); the other
+            // neighbour of the cut is tidied separately
+            self.reclassify(n);
+            return;
         }
         for m in [self.cx.pool.prev(n), n, self.cx.pool.next(n)] {
             self.reclassify(m);
@@ -325,9 +453,20 @@ impl<'a> Clipper<'a> {
                 // only possible around removed walls: list it again
                 self.reflex_count += 1;
                 self.cx.clip.reflex.push(n);
+                if self.indexed {
+                    self.cx.clip.cells.add(n);
+                }
             } else {
                 self.reflex_count -= 1;
+                self.unindex(n);
             }
+        }
+    }
+
+    /// Takes a node that is no longer reflex (or no longer linked) out of the grid.
+    fn unindex(&mut self, n: NodeId) {
+        if self.indexed {
+            self.cx.clip.cells.remove(n);
         }
     }
 
@@ -381,6 +520,7 @@ impl<'a> Clipper<'a> {
     /// self-intersections, then splits the ring along a diagonal, and only then cuts the
     /// best triangle it can. Returns a live node to go on from (`len` is 0 when done).
     fn stuck(&mut self, at: NodeId) -> Result<NodeId, Error> {
+        let at = self.live(at);
         let mut n = at;
         let mut convex = None;
         let mut relaxed = None;
@@ -473,17 +613,15 @@ impl<'a> Clipper<'a> {
     /// in candidates and linear per check, so it stops after a fixed budget of edge tests
     /// (the forced ear takes over then).
     fn split(&mut self, start: NodeId) -> bool {
-        const BUDGET: usize = 1 << 22;
-        let mut budget = BUDGET;
         let mut a = start;
         for _ in 0..self.len {
             let pool = &self.cx.pool;
             let mut b = pool.next(pool.next(a));
             while b != pool.prev(a) {
-                if budget < self.len {
+                if self.cx.clip.split_budget < self.len {
                     return false;
                 }
-                budget -= self.len;
+                self.cx.clip.split_budget -= self.len;
                 if self.valid_diagonal(a, b) {
                     let c = self.cx.pool.split(a, b);
                     self.note(RepairKind::ForcedEar, a);
@@ -507,7 +645,9 @@ impl<'a> Clipper<'a> {
             return false;
         }
         let mut e = a;
-        loop {
+        // `a` is live, so the walk comes back to it after `len` edges; the bound only keeps
+        // a broken ring from looping forever.
+        for _ in 0..=self.len {
             let f = pool.next(e);
             let (pe, pf) = (pool.p(e), pool.p(f));
             // edges at a or b may touch the diagonal at its ends only
@@ -522,18 +662,16 @@ impl<'a> Clipper<'a> {
                 return true;
             }
         }
+        false
     }
 
     /// Lenient fallback test: some reflex vertex strictly inside the triangle at `ear`.
     fn has_vertex_inside(&self, ear: NodeId) -> bool {
         let (a, b, c) = self.corner(ear);
-        self.cx.clip.reflex.iter().any(|&r| {
-            let node = self.cx.pool.get(r);
-            !node.removed
-                && node.reflex
-                && left_of(a, b, node.p)
-                && left_of(b, c, node.p)
-                && left_of(c, a, node.p)
+        let pool = &self.cx.pool;
+        self.any_reflex_near(a, b, c, |r| {
+            let q = pool.p(r);
+            left_of(a, b, q) && left_of(b, c, q) && left_of(c, a, q)
         })
     }
 }
@@ -622,8 +760,17 @@ fn turn(cx: &Context, n: NodeId) -> Orientation {
 fn interferes(pool: &crate::pool::Pool, r: NodeId, a: Point, b: Point, c: Point) -> bool {
     use Orientation::*;
     let q = pool.p(r);
-    let (oab, obc, oca) = (orient2d(a, b, q), orient2d(b, c, q), orient2d(c, a, q));
-    if oab == Clockwise || obc == Clockwise || oca == Clockwise {
+    // most candidates lie outside: stop at the first side that says so
+    let oab = orient2d(a, b, q);
+    if oab == Clockwise {
+        return false;
+    }
+    let obc = orient2d(b, c, q);
+    if obc == Clockwise {
+        return false;
+    }
+    let oca = orient2d(c, a, q);
+    if oca == Clockwise {
         return false;
     }
     if oab == CounterClockwise && obc == CounterClockwise && oca == CounterClockwise {
@@ -646,5 +793,38 @@ fn interferes(pool: &crate::pool::Pool, r: NodeId, a: Point, b: Point, c: Point)
         enters(&|p| left_of(a, b, p))
     } else {
         enters(&|p| left_of(b, c, p))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::cmp::Reverse;
+    use std::collections::BinaryHeap;
+
+    #[test]
+    fn ear_queue_pops_like_a_binary_heap() {
+        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+        let mut random = move |n: u64| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state % n
+        };
+        let (mut queue, mut heap) = (EarQueue::default(), BinaryHeap::new());
+        for _ in 0..20_000 {
+            if random(3) < 2 {
+                // few distinct keys and nodes: ties and duplicates happen
+                let item = (random(50), NodeId(random(40) as u32), random(3) as u32);
+                queue.push(item);
+                heap.push(Reverse(item));
+            } else {
+                assert_eq!(queue.pop(), heap.pop().map(|Reverse(item)| item));
+            }
+        }
+        while let Some(Reverse(item)) = heap.pop() {
+            assert_eq!(queue.pop(), Some(item));
+        }
+        assert_eq!(queue.pop(), None);
     }
 }

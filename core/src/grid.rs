@@ -1,98 +1,338 @@
-//! Horizontal bands of edges: the spatial index behind every ray cast and triangle search
-//! of `nest` and `bridge`, so that neither costs holes × vertices.
+//! Spatial indexes; both only narrow down candidates, every decision is still made by
+//! `predicates`.
 //!
-//! The edge starting at node `n` (`n → next(n)`) is listed in every band its y-range
-//! touches; an edge spanning more than [`MAX_SPAN`] bands goes to one `long` list that every
-//! query scans, which bounds memory. Entries may go stale when the pool is relinked: users
-//! re-read the current edge `n → next(n)` and check it against the query, and register
-//! changed edges again with [`Bands::insert`]. A band of a y value is a monotone function
-//! of y, so an edge is always found in the band of any y within its range.
+//! - [`EdgeGrid`]: a uniform grid of edges, behind every ray cast and triangle search of
+//!   `nest` and `bridge`, so that neither costs holes × vertices. A ray cast walks the
+//!   cells of one row from its origin outwards and stops at the first column past its
+//!   nearest hit, so it costs about the cells it passes, not the row.
+//! - [`Cells`]: a uniform grid of the reflex vertices of the polygon being clipped, so
+//!   that an ear test looks only at the vertices near its triangle.
 
 use crate::pool::NodeId;
 use crate::predicates::Point;
 
-/// Edges spanning more bands than this (or a sixteenth of all bands, if more) are kept in
-/// the `long` list instead.
-const MAX_SPAN: usize = 32;
+/// An edge whose bounding box covers at most this many cells is listed in each of them.
+const MAX_CELLS: usize = 32;
 
-/// The band index (see the module docs).
+/// A longer edge spanning at most this many rows is listed in those rows' lists instead
+/// (one spanning at most this many columns, in those columns' lists), and any other edge
+/// in the `long` list. An edge is listed at most `MAX_CELLS` times, which bounds memory
+/// by the number of edges, also for long thin edges such as a comb's teeth.
+const MAX_THIN: usize = 4;
+
+/// End of a cell's entry list.
+const END: u32 = u32::MAX;
+
+/// The edge grid (see the module docs).
+///
+/// The edge starting at node `n` (`n → next(n)`) is listed in every cell its bounding box
+/// touches, or for a long edge in the lists of the rows or the columns it spans, or in the
+/// `long` list (see [`MAX_THIN`]). Entries may go stale when the pool is relinked: users
+/// re-read the current edge `n → next(n)` and check it against the query, and register
+/// changed edges again with [`EdgeGrid::insert`]. Rows and columns are monotone functions
+/// of y and x, so an edge is always found in the cell, row list or column list of any
+/// point of its bounding box, or in `long`.
 #[derive(Debug, Default)]
-pub(crate) struct Bands {
+pub(crate) struct EdgeGrid {
+    x0: f64,
     y0: f64,
-    scale: f64,
-    count: usize,
-    /// Edges spanning more bands than this go to `long`.
-    max_span: usize,
-    lists: Vec<Vec<NodeId>>,
+    sx: f64,
+    sy: f64,
+    nx: usize,
+    ny: usize,
+    /// First entry of each list, or `END`: the cells row by row, then the rows' lists, then
+    /// the columns' lists.
+    head: Vec<u32>,
+    /// Listed edge and the next entry of the same list.
+    entries: Vec<(NodeId, u32)>,
     long: Vec<NodeId>,
 }
 
-impl Bands {
-    /// Empties the index and sizes it for `edges` edges with y in `ymin..=ymax` whose
-    /// heights sum to `total_dy`: bands about as tall as an average edge, so an edge is
-    /// listed about twice and a band holds a handful of edges.
-    pub fn reset(&mut self, ymin: f64, ymax: f64, edges: usize, total_dy: f64) {
-        let height = ymax - ymin;
-        let mean_dy = total_dy / edges.max(1) as f64;
-        let wanted = (height / mean_dy)
-            .min((edges / 2) as f64)
-            .min((1 << 20) as f64);
-        let count = if wanted.is_finite() && wanted >= 1.0 {
-            wanted as usize
-        } else {
-            1
-        };
-        let scale = count as f64 / height;
-        self.y0 = ymin;
-        self.scale = if scale.is_finite() && height > 0.0 {
-            scale
-        } else {
-            0.0
-        };
-        self.count = count;
-        self.max_span = MAX_SPAN.max(count / 16);
-        if self.lists.len() < count {
-            self.lists.resize_with(count, Vec::new);
-        }
-        for list in &mut self.lists[..count] {
-            list.clear();
-        }
+impl EdgeGrid {
+    /// Empties the index and sizes it for `edges` edges within the box `lo..=hi`: about
+    /// one cell per two edges, shaped like the box, so a cell holds a handful of edges.
+    pub fn reset(&mut self, lo: Point, hi: Point, edges: usize) {
+        let cells = (edges / 2).clamp(1, 1 << 22);
+        let (w, h) = (hi.x - lo.x, hi.y - lo.y);
+        let (nx, ny) = shape(cells, w, h);
+        (self.x0, self.y0, self.nx, self.ny) = (lo.x, lo.y, nx, ny);
+        (self.sx, self.sy) = (scale(nx, w), scale(ny, h));
+        self.head.clear();
+        self.head.resize(nx * ny + ny + nx, END);
+        self.entries.clear();
         self.long.clear();
     }
 
-    /// The band holding y (monotone in y; NaN-free inputs only reach here).
+    /// Column of x (monotone, clamped to the grid).
     #[inline]
-    fn band(&self, y: f64) -> usize {
-        let b = (y - self.y0) * self.scale;
-        // `as` saturates: negative and NaN become 0, huge values the maximum.
-        (b as usize).min(self.count - 1)
+    pub fn column(&self, x: f64) -> usize {
+        // `as` saturates: negative and NaN become 0, huge values the maximum
+        (((x - self.x0) * self.sx) as usize).min(self.nx.max(1) - 1)
+    }
+
+    /// Row of y (monotone, clamped to the grid).
+    #[inline]
+    pub fn row(&self, y: f64) -> usize {
+        (((y - self.y0) * self.sy) as usize).min(self.ny.max(1) - 1)
+    }
+
+    /// Number of columns.
+    #[inline]
+    pub fn columns(&self) -> usize {
+        self.nx
+    }
+
+    /// Number of rows.
+    #[inline]
+    pub fn rows(&self) -> usize {
+        self.ny
     }
 
     /// Lists the edge starting at `n`, running from `a` to `b`.
     pub fn insert(&mut self, n: NodeId, a: Point, b: Point) {
-        if self.count == 0 {
+        if self.head.is_empty() {
             return;
         }
-        let (lo, hi) = (self.band(a.y.min(b.y)), self.band(a.y.max(b.y)));
-        if hi - lo >= self.max_span {
-            self.long.push(n);
+        let (c0, c1) = (self.column(a.x.min(b.x)), self.column(a.x.max(b.x)));
+        let (r0, r1) = (self.row(a.y.min(b.y)), self.row(a.y.max(b.y)));
+        let (cells, rows, columns) = (self.nx * self.ny, r1 - r0 + 1, c1 - c0 + 1);
+        if rows * columns <= MAX_CELLS {
+            for r in r0..=r1 {
+                for c in c0..=c1 {
+                    self.push(r * self.nx + c, n);
+                }
+            }
+        } else if rows <= MAX_THIN {
+            for r in r0..=r1 {
+                self.push(cells + r, n);
+            }
+        } else if columns <= MAX_THIN {
+            for c in c0..=c1 {
+                self.push(cells + self.ny + c, n);
+            }
         } else {
-            for list in &mut self.lists[lo..=hi] {
-                list.push(n);
+            self.long.push(n);
+        }
+    }
+
+    /// Puts `n` at the front of list `list`.
+    fn push(&mut self, list: usize, n: NodeId) {
+        let at = self.entries.len() as u32;
+        self.entries.push((n, self.head[list]));
+        self.head[list] = at;
+    }
+
+    /// The entries of list `list`.
+    fn list(&self, list: usize) -> CellIter<'_> {
+        let at = self.head.get(list).copied().unwrap_or(END);
+        CellIter { edges: self, at }
+    }
+
+    /// The edges listed in the cell at `row`, `column`.
+    pub fn cell(&self, row: usize, column: usize) -> CellIter<'_> {
+        self.list(row * self.nx + column)
+    }
+
+    /// The long edges listed for row `row`.
+    pub fn row_list(&self, row: usize) -> CellIter<'_> {
+        self.list(self.nx * self.ny + row)
+    }
+
+    /// The long edges listed for column `column`.
+    pub fn column_list(&self, column: usize) -> CellIter<'_> {
+        self.list(self.nx * self.ny + self.ny + column)
+    }
+
+    /// The edges long both ways; every query must look at them too.
+    pub fn long(&self) -> &[NodeId] {
+        &self.long
+    }
+
+    /// Every listed edge whose bounding box may meet the box `lo..=hi` (and possibly
+    /// others, and possibly some twice).
+    pub fn query(&self, lo: Point, hi: Point) -> impl Iterator<Item = NodeId> + '_ {
+        let (c0, c1) = (self.column(lo.x), self.column(hi.x));
+        let (r0, r1) = (self.row(lo.y), self.row(hi.y));
+        // an empty grid has one row and column of empty lists (see `list`)
+        let cells = (r0..=r1).flat_map(move |r| (c0..=c1).flat_map(move |c| self.cell(r, c)));
+        cells
+            .chain((r0..=r1).flat_map(move |r| self.row_list(r)))
+            .chain((c0..=c1).flat_map(move |c| self.column_list(c)))
+            .chain(self.long.iter().copied())
+    }
+}
+
+/// Columns and rows for about `cells` cells over a `w` × `h` box, shaped like it; at
+/// least one of each, also when the box is flat or its size overflows.
+fn shape(cells: usize, w: f64, h: f64) -> (usize, usize) {
+    let (wide, tall) = (w > 0.0, h > 0.0);
+    let ratio = w / h;
+    let nx = match (wide, tall) {
+        // NaN-free here; `as` saturates
+        (true, true) if ratio.is_finite() => {
+            ((cells as f64 * ratio).sqrt().round() as usize).clamp(1, cells)
+        }
+        // both sides overflowed to infinity: square-ish
+        (true, true) => ((cells as f64).sqrt() as usize).max(1),
+        (true, false) => cells,
+        _ => 1,
+    };
+    let ny = if tall { cells.div_ceil(nx).max(1) } else { 1 };
+    (nx, ny)
+}
+
+/// Cells per unit length for `cells` cells over `extent` (0 when that is not finite).
+fn scale(cells: usize, extent: f64) -> f64 {
+    let s = cells as f64 / extent;
+    if s.is_finite() && extent > 0.0 {
+        s
+    } else {
+        0.0
+    }
+}
+
+/// The edges of one cell of [`EdgeGrid`].
+pub(crate) struct CellIter<'a> {
+    edges: &'a EdgeGrid,
+    at: u32,
+}
+
+impl Iterator for CellIter<'_> {
+    type Item = NodeId;
+    #[inline]
+    fn next(&mut self) -> Option<NodeId> {
+        let &(n, next) = self.edges.entries.get(self.at as usize)?;
+        self.at = next;
+        Some(n)
+    }
+}
+
+/// `Cells` slot of a node that is not in the grid.
+const NONE: u32 = u32::MAX;
+
+/// Reflex nodes by grid cell (see the module docs), built once per polygon.
+///
+/// Cell `c` holds `entries[start[c]..start[c + 1]]`, cells in row-major order, so the cells
+/// of one row of a query are one contiguous slice. A node that stops being a candidate
+/// gets a NaN position there, which no box contains. Nodes that turn reflex after building
+/// (rare: only where walls were removed) go to `extra`, which every query scans and whose
+/// stale entries callers skip.
+#[derive(Debug, Default)]
+pub(crate) struct Cells {
+    x0: f64,
+    y0: f64,
+    sx: f64,
+    sy: f64,
+    nx: usize,
+    ny: usize,
+    start: Vec<u32>,
+    /// Nodes with their positions: filtering by box needs no look-up in the pool.
+    entries: Vec<(NodeId, Point)>,
+    /// Each node's index in `entries` while it is live there, else `NONE` (or stale from
+    /// an earlier build: valid only when `entries` holds the node at that index; a node is
+    /// listed at most once per build).
+    slot: Vec<u32>,
+    extra: Vec<NodeId>,
+}
+
+impl Cells {
+    /// Rebuilds the grid over `nodes` (at positions given by `pos`), about one node per
+    /// cell; `nodes_total` bounds every node id that will be seen.
+    pub fn build(&mut self, nodes: &[NodeId], pos: impl Fn(NodeId) -> Point, nodes_total: usize) {
+        self.extra.clear();
+        self.entries.clear();
+        if self.slot.len() < nodes_total {
+            self.slot.resize(nodes_total, NONE);
+        }
+        let (mut x0, mut y0, mut x1, mut y1) = (f64::MAX, f64::MAX, f64::MIN, f64::MIN);
+        for &n in nodes {
+            let p = pos(n);
+            (x0, y0, x1, y1) = (x0.min(p.x), y0.min(p.y), x1.max(p.x), y1.max(p.y));
+        }
+        let count = nodes.len().max(1);
+        let (w, h) = (x1 - x0, y1 - y0);
+        // as many cells as nodes, shaped like the bounding box
+        let (nx, ny) = shape(count, w, h);
+        (self.x0, self.y0, self.nx, self.ny) = (x0, y0, nx, ny);
+        (self.sx, self.sy) = (scale(nx, w), scale(ny, h));
+        // counting sort by cell: count into start[c + 1], sum up, then fill, using
+        // start[c + 1] as cell c's cursor (it ends at cell c + 1's first entry)
+        let cells = nx * ny;
+        self.start.clear();
+        self.start.resize(cells + 2, 0);
+        for &n in nodes {
+            let c = self.cell(pos(n));
+            self.start[c + 2] += 1;
+        }
+        for c in 2..cells + 2 {
+            self.start[c] += self.start[c - 1];
+        }
+        self.entries
+            .resize(nodes.len(), (NodeId(0), Point::new(0.0, 0.0)));
+        for &n in nodes {
+            let c = self.cell(pos(n));
+            let at = self.start[c + 1];
+            self.entries[at as usize] = (n, pos(n));
+            self.slot[n.idx()] = at;
+            self.start[c + 1] += 1;
+        }
+        self.start.truncate(cells + 1);
+    }
+
+    /// Column of x (monotone, clamped to the grid).
+    #[inline]
+    fn column(&self, x: f64) -> usize {
+        // `as` saturates: negative and NaN become 0
+        (((x - self.x0) * self.sx) as usize).min(self.nx - 1)
+    }
+
+    /// Row of y (monotone, clamped to the grid).
+    #[inline]
+    fn row(&self, y: f64) -> usize {
+        (((y - self.y0) * self.sy) as usize).min(self.ny - 1)
+    }
+
+    #[inline]
+    fn cell(&self, p: Point) -> usize {
+        self.row(p.y) * self.nx + self.column(p.x)
+    }
+
+    /// Takes node `n` out of the grid, if it is there.
+    pub fn remove(&mut self, n: NodeId) {
+        let at = self.slot.get(n.idx()).copied().unwrap_or(NONE);
+        if let Some(entry) = self.entries.get_mut(at as usize) {
+            if entry.0 == n {
+                entry.1 = Point::new(f64::NAN, f64::NAN);
+                self.slot[n.idx()] = NONE;
             }
         }
     }
 
-    /// Every listed edge whose y-range may meet `ylo..=yhi` (and possibly others, and
-    /// possibly some twice).
-    pub fn query(&self, ylo: f64, yhi: f64) -> impl Iterator<Item = NodeId> + '_ {
-        let (lo, hi) = if self.count == 0 {
-            (1, 0)
-        } else {
-            (self.band(ylo), self.band(yhi))
-        };
-        let lists = self.lists.get(lo..=hi).unwrap_or(&[]);
-        lists.iter().flatten().chain(self.long.iter()).copied()
+    /// Adds a node after building (scanned by every query).
+    pub fn add(&mut self, n: NodeId) {
+        self.extra.push(n);
+    }
+
+    /// Calls `found` on every node in the box `lo..=hi` (and on every `extra` one, stale or
+    /// not, wherever it lies) until it returns true; returns whether it did.
+    pub fn any_in_box(&self, lo: Point, hi: Point, mut found: impl FnMut(NodeId) -> bool) -> bool {
+        if self.entries.is_empty() && self.extra.is_empty() {
+            return false;
+        }
+        // NaN (removed) positions fail every comparison
+        let inside = |q: Point| q.x >= lo.x && q.x <= hi.x && q.y >= lo.y && q.y <= hi.y;
+        let (c0, c1) = (self.column(lo.x), self.column(hi.x));
+        for row in self.row(lo.y)..=self.row(hi.y) {
+            let s = self.start[row * self.nx + c0] as usize;
+            let e = self.start[row * self.nx + c1 + 1] as usize;
+            if self.entries[s..e]
+                .iter()
+                .any(|&(n, q)| inside(q) && found(n))
+            {
+                return true;
+            }
+        }
+        self.extra.iter().any(|&n| found(n))
     }
 }
 
@@ -100,33 +340,80 @@ impl Bands {
 mod tests {
     use super::*;
 
+    fn p(x: f64, y: f64) -> Point {
+        Point::new(x, y)
+    }
+
     #[test]
-    fn finds_edges_by_y_range() {
-        let mut bands = Bands::default();
-        bands.reset(0.0, 100.0, 400, 400.0);
-        bands.insert(NodeId(1), Point::new(0., 10.), Point::new(5., 12.));
-        bands.insert(NodeId(2), Point::new(0., 50.), Point::new(5., 40.));
-        bands.insert(NodeId(3), Point::new(0., 0.), Point::new(0., 100.)); // long
-        let at = |y: f64| bands.query(y, y).collect::<Vec<_>>();
-        assert!(at(11.0).contains(&NodeId(1)));
-        assert!(!at(11.0).contains(&NodeId(2)));
-        assert!(at(45.0).contains(&NodeId(2)));
-        assert!(at(99.0).contains(&NodeId(3)));
-        assert!(bands.query(0.0, 100.0).any(|n| n == NodeId(2)));
+    fn finds_edges_by_box() {
+        let mut edges = EdgeGrid::default();
+        edges.reset(p(0., 0.), p(100., 100.), 400);
+        edges.insert(NodeId(1), p(0., 10.), p(5., 12.));
+        edges.insert(NodeId(2), p(0., 50.), p(5., 40.));
+        edges.insert(NodeId(3), p(0., 0.), p(100., 100.)); // long
+        let at = |x: f64, y: f64| edges.query(p(x, y), p(x, y)).collect::<Vec<_>>();
+        assert!(at(1.0, 11.0).contains(&NodeId(1)));
+        assert!(!at(1.0, 11.0).contains(&NodeId(2)));
+        assert!(at(4.0, 45.0).contains(&NodeId(2)));
+        assert!(!at(90.0, 45.0).contains(&NodeId(2)));
+        assert!(at(99.0, 1.0).contains(&NodeId(3)));
+        assert!(edges
+            .query(p(0., 0.), p(100., 100.))
+            .any(|n| n == NodeId(2)));
+    }
+
+    #[test]
+    fn long_thin_edges_go_to_row_and_column_lists() {
+        let mut edges = EdgeGrid::default();
+        edges.reset(p(0., 0.), p(100., 100.), 20_000);
+        // a thousand horizontal teeth across the whole width, and vertical ones
+        for k in 0..1000 {
+            let y = k as f64 / 10.0;
+            edges.insert(NodeId(k), p(0., y), p(100., y));
+            edges.insert(NodeId(1000 + k), p(y, 0.), p(y, 100.));
+        }
+        // each listed at most `MAX_CELLS` times
+        assert!(edges.entries.len() <= 2000 * MAX_CELLS);
+        assert!(edges.long().is_empty());
+        let at = |x: f64, y: f64| edges.query(p(x, y), p(x, y)).collect::<Vec<_>>();
+        assert!(at(50.0, 50.0).contains(&NodeId(500)));
+        assert!(at(50.0, 50.0).contains(&NodeId(1500)));
+        assert!(!at(50.0, 70.0).contains(&NodeId(500)));
+        let row = edges.row(50.0);
+        assert!(edges.row_list(row).any(|n| n == NodeId(500)));
     }
 
     #[test]
     fn flat_and_huge_ranges_stay_in_bounds() {
-        let mut bands = Bands::default();
-        bands.reset(5.0, 5.0, 100, 0.0);
-        bands.insert(NodeId(0), Point::new(0., 5.), Point::new(1., 5.));
-        assert_eq!(bands.query(5.0, 5.0).count(), 1);
-        bands.reset(-f64::MAX, f64::MAX, 100, f64::MAX);
-        bands.insert(
-            NodeId(0),
-            Point::new(0., -f64::MAX),
-            Point::new(1., f64::MAX),
-        );
-        assert_eq!(bands.query(0.0, 0.0).count(), 1);
+        let mut edges = EdgeGrid::default();
+        edges.reset(p(0., 5.), p(1., 5.), 100);
+        edges.insert(NodeId(0), p(0., 5.), p(1., 5.));
+        assert_eq!(edges.query(p(0., 5.), p(0., 5.)).count(), 1);
+        edges.reset(p(-f64::MAX, -f64::MAX), p(f64::MAX, f64::MAX), 100);
+        edges.insert(NodeId(0), p(0., -f64::MAX), p(1., f64::MAX));
+        assert_eq!(edges.query(p(0., 0.), p(0., 0.)).count(), 1);
+    }
+
+    #[test]
+    fn cells_track_removal() {
+        let pts = [p(0., 0.), p(1., 1.), p(2., 2.), p(3., 3.), p(0., 3.)];
+        let nodes: Vec<NodeId> = (0..5).map(NodeId).collect();
+        let mut cells = Cells::default();
+        cells.build(&nodes, |n| pts[n.idx()], 5);
+        let found = |cells: &Cells, lo: Point, hi: Point| {
+            let mut v = Vec::new();
+            cells.any_in_box(lo, hi, |n| {
+                v.push(n);
+                false
+            });
+            v
+        };
+        assert!(found(&cells, p(0.5, 0.5), p(1.5, 1.5)).contains(&NodeId(1)));
+        cells.remove(NodeId(1));
+        assert!(!found(&cells, p(0., 0.), p(3., 3.)).contains(&NodeId(1)));
+        assert_eq!(found(&cells, p(0., 0.), p(3., 3.)).len(), 4);
+        cells.remove(NodeId(1)); // not there: no effect
+        cells.add(NodeId(1));
+        assert!(found(&cells, p(3., 0.), p(3., 0.)).contains(&NodeId(1)));
     }
 }

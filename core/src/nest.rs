@@ -4,10 +4,16 @@
 //! odd: hole. An island inside a hole is a polygon of its own, to any depth. The depth of
 //! ring B is the number of rings containing it, computed at one vertex V of B as a winding
 //! number: with every ring counter-clockwise (the clean stage made them so), the signed
-//! crossings of the ray from V towards +x with all other rings' edges count the rings
-//! around V. Rings passing through V (touching B there) are decided locally instead, by
-//! whether B's corner at V lies inside theirs. The edges come from a band index, so a ring
-//! costs one band, not the whole input.
+//! crossings of a ray from V with all other rings' edges count the rings around V. Rings
+//! passing through V (touching B there) are decided locally instead, by whether B's corner
+//! at V lies inside theirs. The edges come from a grid index; the ray runs along the grid
+//! row or column with the fewest cells to the border, so a ring costs those cells, not the
+//! whole input.
+//!
+//! Usually it costs less: rings go by descending rightmost x, and when the first edge the
+//! ray from B's rightmost vertex meets is unambiguous (met inside, alone, no ring through
+//! V, no crossings), B's depth is that edge's ring's depth, plus one if V lies on its inner
+//! side. The ray then stops at that edge, a cell or two away.
 //!
 //! `Nesting::FirstIsOuter` (earcut's convention) takes ring 0 as the outer boundary and the
 //! rest as its holes; strict mode checks that this is true.
@@ -15,6 +21,7 @@
 //! Finally holes are turned clockwise, so that in every ring the polygon's interior lies to
 //! the left of each edge — the convention `bridge` and `clip` rely on.
 
+use crate::bridge::compare_hits;
 use crate::pool::NodeId;
 use crate::predicates::{left_of, on_segment, orient2d, Orientation, Point};
 use crate::report::{DropReason, Dropped, RepairKind};
@@ -93,32 +100,54 @@ pub(crate) fn skip_ring(cx: &mut Context, r: usize) {
 }
 
 /// Fills every live ring's `depth` with the number of rings containing it.
+///
+/// Rings go by descending rightmost x: the ring whose depth [`depth_from_nearest`] builds
+/// on reaches further right than the ring asking, so it is done by then.
 fn compute_depths(cx: &mut Context) -> Result<(), Error> {
     index_all_edges(cx);
-    for r in 0..cx.rings.len() {
-        if cx.rings[r].alive {
-            cx.rings[r].depth = depth_of(cx, r)?;
+    cx.depth_known.clear();
+    cx.depth_known.resize(cx.rings.len(), false);
+    let mut order = core::mem::take(&mut cx.ring_order);
+    order.clear();
+    order.extend((0..cx.rings.len() as u32).filter(|&r| cx.rings[r as usize].alive));
+    let (pool, rings) = (&cx.pool, &cx.rings);
+    let x = |r: u32| pool.p(rings[r as usize].rightmost).x;
+    order.sort_unstable_by(|&a, &b| x(b).total_cmp(&x(a)).then(a.cmp(&b)));
+    let mut result = Ok(());
+    for &r in &order {
+        match depth_of(cx, r as usize) {
+            Ok(depth) => {
+                cx.rings[r as usize].depth = depth;
+                cx.depth_known[r as usize] = true;
+            }
+            Err(e) => {
+                result = Err(e);
+                break;
+            }
         }
     }
-    Ok(())
+    cx.ring_order = order;
+    result
 }
 
-/// Lists every live edge in the band index.
+/// Lists every live edge in the grid index.
 pub(crate) fn index_all_edges(cx: &mut Context) {
-    let (mut ymin, mut ymax, mut edges, mut total_dy) = (f64::INFINITY, f64::NEG_INFINITY, 0, 0.0);
+    let mut lo = Point::new(f64::INFINITY, f64::INFINITY);
+    let mut hi = Point::new(f64::NEG_INFINITY, f64::NEG_INFINITY);
+    let mut edges = 0;
     for ring in cx.rings.iter().filter(|r| r.alive) {
         for n in cx.pool.ring(ring.start) {
-            let (y, y_next) = (cx.pool.p(n).y, cx.pool.p(cx.pool.next(n)).y);
-            ymin = ymin.min(y);
-            ymax = ymax.max(y);
-            total_dy += (y_next - y).abs();
+            let p = cx.pool.p(n);
+            lo = Point::new(lo.x.min(p.x), lo.y.min(p.y));
+            hi = Point::new(hi.x.max(p.x), hi.y.max(p.y));
             edges += 1;
         }
     }
-    cx.bands.reset(ymin, ymax, edges, total_dy);
+    cx.edge_grid.reset(lo, hi, edges);
     for ring in cx.rings.iter().filter(|r| r.alive) {
         for n in cx.pool.ring(ring.start) {
-            cx.bands.insert(n, cx.pool.p(n), cx.pool.p(cx.pool.next(n)));
+            cx.edge_grid
+                .insert(n, cx.pool.p(n), cx.pool.p(cx.pool.next(n)));
         }
     }
 }
@@ -155,7 +184,7 @@ fn depth_at(cx: &mut Context, b: usize, v: NodeId) -> Option<u32> {
     // Rings passing through V: decided locally, left out of the winding number.
     let touching = &mut cx.order;
     touching.clear();
-    for n in cx.bands.query(pv.y, pv.y) {
+    for n in cx.edge_grid.query(pv, pv) {
         let node = cx.pool.get(n);
         let ring = node.ring;
         if ring as usize == b || node.removed || !cx.rings[ring as usize].alive {
@@ -165,19 +194,12 @@ fn depth_at(cx: &mut Context, b: usize, v: NodeId) -> Option<u32> {
             touching.push(ring);
         }
     }
-    let mut winding: i64 = 0;
-    for n in cx.bands.query(pv.y, pv.y) {
-        let node = cx.pool.get(n);
-        let ring = node.ring;
-        if ring as usize == b
-            || node.removed
-            || !cx.rings[ring as usize].alive
-            || touching.contains(&ring)
-        {
-            continue;
+    if cx.order.is_empty() && v == cx.rings[b].rightmost && cx.crossings.is_empty() {
+        if let Some(depth) = depth_from_nearest(cx, b, pv) {
+            return Some(depth);
         }
-        winding += crossing(node.p, cx.pool.p(node.next), pv);
     }
+    let winding = winding_number(cx, b, pv);
     let mut depth = winding.max(0) as u32;
     for k in 0..cx.order.len() {
         let r = cx.order[k] as usize;
@@ -186,6 +208,230 @@ fn depth_at(cx: &mut Context, b: usize, v: NodeId) -> Option<u32> {
         }
     }
     Some(depth)
+}
+
+/// The depth of ring `b` read off the nearest edge e (of ring R) that the ray from `pv`,
+/// b's rightmost vertex, towards +x meets — when that is decisive: no ring passes through
+/// `pv`, no edges cross, the ray meets e alone there and inside e, and R's depth is known.
+/// Then nothing lies between `pv` and e, so `pv` is inside the rings R is inside, and inside
+/// R too when e runs upwards (every ring is counter-clockwise here: interior on the left).
+/// `None` leaves the case to the winding number. A ray meeting nothing: depth 0.
+///
+/// The walk along the grid row stops as in `bridge::nearest_hit`: edges not seen yet lie
+/// wholly in later columns.
+fn depth_from_nearest(cx: &Context, b: usize, pv: Point) -> Option<u32> {
+    let grid = &cx.edge_grid;
+    let mut near = Nearest::default();
+    let row = grid.row(pv.y);
+    for n in grid.long().iter().copied().chain(grid.row_list(row)) {
+        near.visit(cx, b, pv, n);
+    }
+    for column in grid.column(pv.x)..grid.columns() {
+        for n in grid.cell(row, column).chain(grid.column_list(column)) {
+            near.visit(cx, b, pv, n);
+        }
+        let hit_done = near
+            .best
+            .is_some_and(|h| grid.column(h.lo.x.max(h.hi.x)) <= column);
+        if hit_done || (near.touch_x.is_finite() && grid.column(near.touch_x) <= column) {
+            break;
+        }
+    }
+    let Some(hit) = near.best else {
+        let nothing = near.touch_x.is_infinite() && !near.through_origin;
+        return nothing.then_some(0);
+    };
+    let touch = Point::new(near.touch_x, pv.y);
+    // a point where an edge meets the ray's line at an endpoint, as near as the hit or
+    // nearer: not decided here
+    let touch_nearer =
+        near.touch_x.is_finite() && orient2d(hit.lo, hit.hi, touch) != Orientation::Clockwise;
+    if near.tie || near.through_origin || touch_nearer || !cx.depth_known[hit.ring] {
+        return None;
+    }
+    Some(cx.rings[hit.ring].depth + u32::from(hit.upward))
+}
+
+/// The nearest edge met by a ray towards +x, as [`depth_from_nearest`] collects it.
+struct Nearest {
+    best: Option<Hit>,
+    /// Another edge meets the ray exactly where `best` does.
+    tie: bool,
+    /// An edge passes through the ray's origin.
+    through_origin: bool,
+    /// The smallest x (at or right of the ray's origin) where an edge meets the ray's line
+    /// at an endpoint or runs along it; infinity when none does.
+    touch_x: f64,
+}
+
+/// An edge crossing the ray's line strictly between its endpoints `lo` (below) and `hi`.
+#[derive(Clone, Copy)]
+struct Hit {
+    edge: NodeId,
+    lo: Point,
+    hi: Point,
+    ring: usize,
+    /// The edge runs from `lo` to `hi`.
+    upward: bool,
+}
+
+impl Default for Nearest {
+    fn default() -> Self {
+        Nearest {
+            best: None,
+            tie: false,
+            through_origin: false,
+            touch_x: f64::INFINITY,
+        }
+    }
+}
+
+impl Nearest {
+    /// Takes the edge starting at `n` into account.
+    fn visit(&mut self, cx: &Context, b: usize, pv: Point, n: NodeId) {
+        let node = cx.pool.get(n);
+        let ring = node.ring as usize;
+        if ring == b || node.removed || !cx.rings[ring].alive {
+            return;
+        }
+        let (p, q) = (node.p, cx.pool.p(node.next));
+        let upward = p.y <= q.y;
+        let (lo, hi) = if upward { (p, q) } else { (q, p) };
+        if hi.y < pv.y || lo.y > pv.y || self.best.is_some_and(|h| h.edge == n) {
+            return;
+        }
+        if lo.y == pv.y || hi.y == pv.y {
+            for e in [lo, hi] {
+                if e.y == pv.y && e.x >= pv.x {
+                    self.touch_x = self.touch_x.min(e.x);
+                }
+            }
+            return;
+        }
+        match orient2d(lo, hi, pv) {
+            Orientation::CounterClockwise => {}
+            // behind the ray's origin
+            Orientation::Clockwise => return,
+            // through the origin: not decided here
+            Orientation::Collinear => {
+                self.through_origin = true;
+                return;
+            }
+        }
+        let hit = Hit {
+            edge: n,
+            lo,
+            hi,
+            ring,
+            upward,
+        };
+        match self.best {
+            None => self.best = Some(hit),
+            Some(h) => match compare_hits(pv.y, h.lo, h.hi, lo, hi) {
+                core::cmp::Ordering::Less => {
+                    self.best = Some(hit);
+                    self.tie = false;
+                }
+                core::cmp::Ordering::Equal => self.tie = true,
+                core::cmp::Ordering::Greater => {}
+            },
+        }
+    }
+}
+
+/// The winding number of the rings other than `b` and those in `cx.order` (touching V)
+/// around `pv`, by a ray along the grid row or column with the fewest cells to the edge.
+fn winding_number(cx: &Context, b: usize, pv: Point) -> i64 {
+    let grid = &cx.edge_grid;
+    let (row, column) = (grid.row(pv.y), grid.column(pv.x));
+    let (nx, ny) = (grid.columns(), grid.rows());
+    let ray = [
+        (Ray::East, nx - column),
+        (Ray::West, column + 1),
+        (Ray::North, ny - row),
+        (Ray::South, row + 1),
+    ]
+    .into_iter()
+    .min_by_key(|&(_, cells)| cells)
+    .map_or(Ray::East, |(ray, _)| ray);
+    let v = ray.turn(pv);
+    let mut winding = 0;
+    // `at`: the cell of the walk, for a listed edge; an edge is listed in every cell its
+    // box spans, so it counts in the first one of the walk only
+    let mut count = |n: NodeId, at: Option<usize>| {
+        let node = cx.pool.get(n);
+        let ring = node.ring;
+        let (p, next) = (node.p, cx.pool.p(node.next));
+        let first = match ray {
+            Ray::East => grid.column(p.x.min(next.x)).max(column),
+            Ray::West => grid.column(p.x.max(next.x)).min(column),
+            Ray::North => grid.row(p.y.min(next.y)).max(row),
+            Ray::South => grid.row(p.y.max(next.y)).min(row),
+        };
+        if ring as usize == b
+            || node.removed
+            || !cx.rings[ring as usize].alive
+            || cx.order.contains(&ring)
+            || at.is_some_and(|k| k != first)
+        {
+            return;
+        }
+        winding += crossing(ray.turn(p), ray.turn(next), v);
+    };
+    for &n in grid.long() {
+        count(n, None);
+    }
+    // the lists along the walk's own row (column) hold an edge once; cells and the lists
+    // across it hold an edge in every column (row) it spans
+    match ray {
+        Ray::East | Ray::West => {
+            grid.row_list(row).for_each(|n| count(n, None));
+            let columns = if ray == Ray::East {
+                column..nx
+            } else {
+                0..column + 1
+            };
+            for c in columns {
+                let listed = grid.cell(row, c).chain(grid.column_list(c));
+                listed.for_each(|n| count(n, Some(c)));
+            }
+        }
+        Ray::North | Ray::South => {
+            grid.column_list(column).for_each(|n| count(n, None));
+            let rows = if ray == Ray::North {
+                row..ny
+            } else {
+                0..row + 1
+            };
+            for r in rows {
+                let listed = grid.cell(r, column).chain(grid.row_list(r));
+                listed.for_each(|n| count(n, Some(r)));
+            }
+        }
+    }
+    winding
+}
+
+/// A direction for the ray of a winding number.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Ray {
+    East,
+    West,
+    North,
+    South,
+}
+
+impl Ray {
+    /// The quarter turn taking this direction to +x: exact (swaps and negations only) and
+    /// orientation-preserving, so [`crossing`] on turned points counts along this ray.
+    fn turn(self, p: Point) -> Point {
+        match self {
+            Ray::East => p,
+            Ray::West => Point::new(-p.x, -p.y),
+            Ray::North => Point::new(p.y, -p.x),
+            Ray::South => Point::new(-p.y, p.x),
+        }
+    }
 }
 
 /// Signed crossing of the ray from `v` towards +x with the edge a → b (half-open in y, so
@@ -207,7 +453,7 @@ fn locally_inside(cx: &Context, v: NodeId, r: usize) -> Option<bool> {
     let pv = cx.pool.p(v);
     let (vn, vp) = (cx.pool.p(cx.pool.next(v)), cx.pool.p(cx.pool.prev(v)));
     let mut inside = false;
-    for n in cx.bands.query(pv.y, pv.y) {
+    for n in cx.edge_grid.query(pv, pv) {
         let node = cx.pool.get(n);
         if node.ring as usize != r || node.removed {
             continue;

@@ -3,7 +3,7 @@
 
 use core::marker::PhantomData;
 
-use crate::grid::Bands;
+use crate::grid::EdgeGrid;
 use crate::pool::{NodeId, Pool};
 use crate::report::{Dropped, Repair, RepairKind, Report};
 use crate::validate::SweepScratch;
@@ -71,6 +71,9 @@ pub(crate) struct Context {
     /// Scratch: ring order for bridging, ring start nodes for the sweep.
     pub order: Vec<u32>,
     pub starts: Vec<NodeId>,
+    /// Scratch of `nest`: rings by descending rightmost x, and whose depth is known yet.
+    pub ring_order: Vec<u32>,
+    pub depth_known: Vec<bool>,
     /// Scratch: edges by start node (lenient crossing flags).
     pub edges: Vec<NodeId>,
     pub touches: Vec<validate::Touch>,
@@ -80,7 +83,7 @@ pub(crate) struct Context {
     pub relink: Vec<(NodeId, NodeId)>,
     pub crossings: Vec<validate::Crossing>,
     pub sweep: SweepScratch,
-    pub bands: Bands,
+    pub edge_grid: EdgeGrid,
     /// Lenient mode with crossings: the input's area (outer rings minus holes, by the
     /// shoelace formula as earcut measures it) and snapshots for a second clipping try.
     pub area: f64,
@@ -131,7 +134,9 @@ fn run<T: Coord>(
         cx.starts.clear();
         cx.starts
             .extend(cx.rings.iter().filter(|r| r.alive).map(|r| r.start));
-        validate::mark_crossed(&mut cx.pool, &cx.starts, &mut cx.edges);
+        // the grid of the edges as they are now (bridge builds its own afterwards)
+        nest::index_all_edges(cx);
+        validate::mark_crossed(&mut cx.pool, &cx.edge_grid, &cx.starts, &mut cx.edges);
     }
     bridge::bridge(cx)?;
     let polygons = if cx.lenient && !cx.crossings.is_empty() {

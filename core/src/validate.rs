@@ -20,6 +20,7 @@
 
 use core::cmp::Ordering;
 
+use crate::grid::EdgeGrid;
 use crate::pool::{NodeId, Pool};
 use crate::predicates::{cmp_xy, on_segment, orient2d, Orientation, Point};
 
@@ -42,6 +43,8 @@ pub(crate) struct Crossing {
 #[derive(Debug, Default)]
 pub(crate) struct SweepScratch {
     pub order: Vec<NodeId>,
+    /// `order` with its sort keys while it is sorted (see [`sort_key`]).
+    keyed: Vec<(i64, i64, NodeId)>,
     /// The edges crossing the sweep line, bottom to top.
     status: Vec<Seg>,
     /// The edges through the current event point while they are re-sorted.
@@ -67,10 +70,23 @@ pub(crate) fn sweep(
     touches: &mut Vec<Touch>,
     crossings: &mut Vec<Crossing>,
 ) {
-    let SweepScratch { order, status, run } = scratch;
+    let SweepScratch {
+        order,
+        keyed,
+        status,
+        run,
+    } = scratch;
     collect_nodes(pool, starts, order);
-    // A total order (total_cmp, then ids), so the standard sort is safe here.
-    order.sort_unstable_by(|&a, &b| key_cmp(pool.p(a), pool.p(b)).then(a.cmp(&b)));
+    // Sorted by [`key_cmp`], then ids: the keys sit beside the ids, so the sort compares
+    // integers instead of looking every node up in the pool.
+    keyed.clear();
+    keyed.extend(order.iter().map(|&n| {
+        let p = pool.p(n);
+        (sort_key(p.x), sort_key(p.y), n)
+    }));
+    keyed.sort_unstable();
+    order.clear();
+    order.extend(keyed.iter().map(|k| k.2));
     status.clear();
     run.clear();
     // There are at most as many edges as nodes: reserving that much up front means a
@@ -85,6 +101,7 @@ pub(crate) fn sweep(
         stop_at_first_crossing,
         touches,
         crossings,
+        ordered: true,
     };
     let mut i = 0;
     while let Some(&n) = order.get(i) {
@@ -132,6 +149,13 @@ fn key_cmp(a: Point, b: Point) -> Ordering {
     cmp_xy(unsigned(a), unsigned(b))
 }
 
+/// An integer ordered as [`key_cmp`] orders coordinates: `total_cmp`'s order of x + 0.0.
+fn sort_key(x: f64) -> i64 {
+    let bits = (x + 0.0).to_bits() as i64;
+    // negative values: flip all but the sign bit, so that more negative sorts lower
+    bits ^ (((bits >> 63) as u64) >> 1) as i64
+}
+
 /// True when `a` and `b` are the same point.
 fn same(a: Point, b: Point) -> bool {
     key_cmp(a, b) == Ordering::Equal
@@ -145,6 +169,13 @@ fn in_interior(s: &Seg, p: Point) -> bool {
 /// True when the interiors of `s` and `t` cross at one point: each one's endpoints lie
 /// strictly on opposite sides of the other's line.
 fn properly_cross(s: &Seg, t: &Seg) -> bool {
+    // edges whose boxes are apart (most neighbours in the status) cannot cross: compared
+    // exactly, and without four orientation tests
+    let apart =
+        |a0: f64, a1: f64, b0: f64, b1: f64| a0.max(a1) < b0.min(b1) || b0.max(b1) < a0.min(a1);
+    if apart(s.l.x, s.r.x, t.l.x, t.r.x) || apart(s.l.y, s.r.y, t.l.y, t.r.y) {
+        return false;
+    }
     straddles(s, t) && straddles(t, s)
 }
 
@@ -227,6 +258,9 @@ struct Sweep<'a> {
     stop_at_first_crossing: bool,
     touches: &'a mut Vec<Touch>,
     crossings: &'a mut Vec<Crossing>,
+    /// No crossing seen yet, so the status is in order (Shamos–Hoey: the leftmost crossing
+    /// pair becomes adjacent, and is seen, before the sweep reaches the crossing).
+    ordered: bool,
 }
 
 impl Sweep<'_> {
@@ -251,8 +285,17 @@ impl Sweep<'_> {
             .status
             .partition_point(|s| orient2d(s.l, s.r, p) == Orientation::CounterClockwise);
         let rest = &self.status[lo..];
-        let hi = lo + rest.partition_point(|s| orient2d(s.l, s.r, p) != Orientation::Clockwise);
-        (lo, hi)
+        let through = |s: &Seg| orient2d(s.l, s.r, p) != Orientation::Clockwise;
+        let run = if self.ordered {
+            // in order, `through` holds for a prefix of `rest`: the edges at p, usually
+            // none or two, so walking it is cheaper than a binary search and gives the same
+            rest.iter().position(|s| !through(s)).unwrap_or(rest.len())
+        } else {
+            // out of order, the binary search's answer is the one this sweep has always
+            // given (lenient results depend on it)
+            rest.partition_point(through)
+        };
+        (lo, lo + run)
     }
 
     /// Copies the run's edges that continue past `p` into `run`, reporting a touch for every
@@ -345,6 +388,7 @@ impl Sweep<'_> {
 
     /// Records a crossing of the edges `a` and `b`; returns true when the sweep should stop.
     fn cross(&mut self, a: NodeId, b: NodeId) -> bool {
+        self.ordered = false;
         self.crossings.push(Crossing { a, b });
         self.stop_at_first_crossing
     }
@@ -352,58 +396,73 @@ impl Sweep<'_> {
 
 /// Lenient mode, after the sweep saw a crossing: flags every edge (by its start node) that
 /// properly crosses another edge of the rings through `starts`. The sweep stops being exact
-/// after its first crossing; this pass is exact and complete. It compares only edges whose
-/// x-ranges overlap, in order of their left ends, so it costs about n times the number of
-/// edges spanning a vertical line.
-pub(crate) fn mark_crossed(pool: &mut Pool, starts: &[NodeId], edges: &mut Vec<NodeId>) {
-    edges.clear();
+/// after its first crossing; this pass is exact and complete. `grid` lists the current
+/// edges of those rings; each edge is compared with the edges listed in the cells of its
+/// bounding box, so it costs about the edges near each edge.
+pub(crate) fn mark_crossed(
+    pool: &mut Pool,
+    grid: &EdgeGrid,
+    starts: &[NodeId],
+    flagged: &mut Vec<NodeId>,
+) {
+    flagged.clear();
+    let seg = |pool: &Pool, n: NodeId| Seg {
+        edge: n,
+        l: pool.p(n),
+        r: pool.p(pool.next(n)),
+    };
     for &s in starts {
-        let mut n = s;
+        let mut m = s;
         for _ in 0..pool.len() {
-            edges.push(n);
-            n = pool.next(n);
-            if n == s {
+            let sm = seg(pool, m);
+            let lo = Point::new(sm.l.x.min(sm.r.x), sm.l.y.min(sm.r.y));
+            let hi = Point::new(sm.l.x.max(sm.r.x), sm.l.y.max(sm.r.y));
+            // each pair from its smaller id; a pair listed in several cells is tested
+            // again, which only flags the same edges again
+            for n in grid.query(lo, hi) {
+                if n > m && properly_cross(&sm, &seg(pool, n)) {
+                    flagged.push(m);
+                    flagged.push(n);
+                }
+            }
+            m = pool.next(m);
+            if m == s {
                 break;
             }
         }
     }
-    let span = |pool: &Pool, n: NodeId| {
-        let (a, b) = (pool.p(n), pool.p(pool.next(n)));
-        (a.x.min(b.x), a.x.max(b.x), a.y.min(b.y), a.y.max(b.y))
-    };
-    edges.sort_unstable_by(|&m, &n| span(pool, m).0.total_cmp(&span(pool, n).0));
-    for i in 0..edges.len() {
-        let (_, x1, y0, y1) = span(pool, edges[i]);
-        for j in i + 1..edges.len() {
-            let (u0, _, v0, v1) = span(pool, edges[j]);
-            if u0 > x1 {
-                break;
-            }
-            if v0 > y1 || v1 < y0 {
-                continue;
-            }
-            let (m, n) = (edges[i], edges[j]);
-            let s = Seg {
-                edge: m,
-                l: pool.p(m),
-                r: pool.p(pool.next(m)),
-            };
-            let t = Seg {
-                edge: n,
-                l: pool.p(n),
-                r: pool.p(pool.next(n)),
-            };
-            if properly_cross(&s, &t) {
-                pool.get_mut(m).crossed = true;
-                pool.get_mut(n).crossed = true;
-            }
-        }
+    for &n in flagged.iter() {
+        pool.get_mut(n).crossed = true;
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn sort_keys_order_like_key_cmp() {
+        let values = [
+            f64::NEG_INFINITY,
+            -1e300,
+            -1.5,
+            -f64::MIN_POSITIVE,
+            -5e-324,
+            -0.0,
+            0.0,
+            5e-324,
+            1.0,
+            1.0 + f64::EPSILON,
+            1e300,
+            f64::INFINITY,
+        ];
+        for &a in &values {
+            for &b in &values {
+                let (pa, pb) = (Point::new(a, 0.0), Point::new(b, 0.0));
+                assert_eq!(sort_key(a).cmp(&sort_key(b)), key_cmp(pa, pb), "{a} {b}");
+            }
+        }
+    }
 
     /// A tiny seeded xorshift64* generator, so every run sees the same cases.
     struct Rng(u64);

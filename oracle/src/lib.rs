@@ -1,0 +1,44 @@
+//! # polytri-oracle
+//!
+//! The harness half of polytri: it judges triangulations independently of the code under
+//! test, generates random valid polygons with holes, and runs other triangulators on the
+//! same inputs.
+//!
+//! - [`input`]: what is triangulated — rings, ring starts and the nesting convention.
+//! - `check`: the verdict on a triangulation (exact validity, geo's area and containment,
+//!   spade's constrained Delaunay triangulation, quality metrics).
+//! - `gen`: seeded generators of valid nested polygons, one per named family.
+//! - `strategy`: proptest strategies over the generators, shrinking to smaller valid inputs.
+//! - `peers`: earcut, earcutr, i_triangle, lyon and spade on the same inputs.
+//! - `shrink`: a failing case made small, staying valid (ring runs, then vertex runs).
+//! - `campaign`: every family × strategy × precision through the oracle, failures shrunk
+//!   and written as corpus cases (`polytri campaign`).
+//! - `precision`: where `f32` and `f64` triangulations stay valid, over scales, offsets and
+//!   feature sizes (`polytri precision`).
+//! - `fuzz`: the bodies of the cargo-fuzz targets, so stable tests can replay their corpus.
+//! - `replay`: the regression corpus through polytri in every strategy, precision and
+//!   rotation, judged here (`oracle/tests/corpus.rs`'s snapshots, `polytri replay`).
+//!
+//! Nothing here shares predicates with `polytri`: the oracle has its own exact arithmetic
+//! (`exact`, after Shewchuk).
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+pub mod campaign;
+mod cdt;
+pub mod check;
+mod exact;
+pub mod fuzz;
+pub mod gen;
+mod grid;
+pub mod input;
+mod metrics;
+pub mod peers;
+pub mod precision;
+pub mod replay;
+pub mod shrink;
+pub mod strategy;
+
+pub use check::{check, check_with, CdtComparison, Check, CheckOptions, Verdict};
+pub use gen::{generate, Case, Family, Params};
+pub use input::{Input, Nesting, Role};

@@ -1,0 +1,279 @@
+//! Reusable state for benchmarks: every implementation on a prepared input, buffers kept.
+
+use std::fmt;
+use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::str::FromStr;
+
+use i_triangle::float::triangulation::Triangulation;
+use lyon_tessellation::path::Path;
+use lyon_tessellation::{BuffersBuilder, FillTessellator, FillVertex, VertexBuffers};
+
+use super::group::{polygons, Polygon};
+use super::spade::Constraints;
+use super::{check_finite, panic_message, Peer};
+use crate::input::Input;
+
+/// Something a benchmark times: a polytri configuration or a peer.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Implementation {
+    /// polytri, fast strategy, strict (the input is checked for crossings first).
+    PolytriFast,
+    /// polytri, fast strategy, lenient (no input check): the difference to
+    /// [`PolytriFast`](Self::PolytriFast) is the cost of the strict check.
+    PolytriLenient,
+    /// polytri, quality strategy (smallest angle first), strict.
+    PolytriQuality,
+    /// Another triangulator.
+    Peer(Peer),
+}
+
+impl Implementation {
+    /// The polytri configurations, in the order tables show them.
+    pub const POLYTRI: [Implementation; 3] = [
+        Implementation::PolytriFast,
+        Implementation::PolytriLenient,
+        Implementation::PolytriQuality,
+    ];
+
+    /// Every polytri configuration, then every peer.
+    pub fn all() -> Vec<Implementation> {
+        Self::POLYTRI
+            .into_iter()
+            .chain(Peer::ALL.into_iter().map(Implementation::Peer))
+            .collect()
+    }
+
+    /// Whether this is polytri (as opposed to a peer).
+    pub const fn is_polytri(self) -> bool {
+        !matches!(self, Implementation::Peer(_))
+    }
+
+    /// The kebab-case name, as [`Display`](fmt::Display) writes and [`FromStr`] reads it.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Implementation::PolytriFast => "polytri-fast",
+            Implementation::PolytriLenient => "polytri-lenient",
+            Implementation::PolytriQuality => "polytri-quality",
+            Implementation::Peer(peer) => peer.name(),
+        }
+    }
+}
+
+impl fmt::Display for Implementation {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for Implementation {
+    type Err = String;
+
+    /// Reads a name as [`Implementation::name`] gives it, or a peer's.
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        Self::POLYTRI
+            .into_iter()
+            .find(|imp| imp.name().eq_ignore_ascii_case(s.trim()))
+            .map_or_else(|| s.parse().map(Implementation::Peer), Ok)
+    }
+}
+
+/// An input converted once into every implementation's input format, so that timing
+/// leaves the conversion out.
+#[derive(Clone, Debug)]
+pub struct Prepared {
+    input: Input,
+    /// The polygons, outer ring first (earcut, earcutr; polytri for `Roles` inputs).
+    polygons: Vec<Polygon>,
+    /// Each polygon's hole starts as earcut takes them.
+    holes: Vec<Vec<u32>>,
+    /// Each polygon flat, as earcutr takes it.
+    flat: Vec<Vec<f64>>,
+    /// Every ring (i_triangle).
+    rings: Vec<Vec<[f64; 2]>>,
+    /// Every ring, closed (lyon).
+    path: Path,
+    /// Distinct points and constraint edges (spade).
+    constraints: Constraints,
+}
+
+impl Prepared {
+    /// Converts `input` for every implementation (grouping rings into polygons by
+    /// containment when it says [`Nesting::Auto`](crate::Nesting::Auto)).
+    pub fn new(input: &Input) -> Self {
+        let polygons = polygons(input);
+        Prepared {
+            input: input.clone(),
+            holes: polygons.iter().map(Polygon::hole_indices).collect(),
+            flat: polygons
+                .iter()
+                .map(|p| p.vertices.iter().flatten().copied().collect())
+                .collect(),
+            polygons,
+            rings: input.rings(),
+            path: super::lyon::path(input).0,
+            constraints: Constraints::new(input),
+        }
+    }
+
+    /// The input this was prepared from.
+    pub fn input(&self) -> &Input {
+        &self.input
+    }
+}
+
+/// Every implementation's reusable state: a benchmark calls [`Runner::run`] in a loop and
+/// after the first call nothing is set up again that the library lets its caller keep.
+///
+/// earcutr and spade have no reusable state (their APIs build fresh results); spade's
+/// input is cloned per run because it takes its vectors by value.
+pub struct Runner {
+    polytri: polytri::Triangulator<f64>,
+    polytri_out: Vec<[u32; 3]>,
+    earcut: earcut::Earcut<f64>,
+    earcut_out: Vec<u32>,
+    i_triangle: i_triangle::float::triangulator::Triangulator<u32, i32>,
+    i_triangle_out: Triangulation<[f64; 2], u32>,
+    lyon: FillTessellator,
+    lyon_out: VertexBuffers<[f32; 2], u32>,
+}
+
+impl Default for Runner {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl fmt::Debug for Runner {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("Runner").finish_non_exhaustive()
+    }
+}
+
+impl Runner {
+    /// Fresh state for every implementation.
+    pub fn new() -> Self {
+        Runner {
+            polytri: polytri::Triangulator::new(),
+            polytri_out: Vec::new(),
+            earcut: earcut::Earcut::new(),
+            earcut_out: Vec::new(),
+            i_triangle: super::i_triangle::triangulator(64),
+            i_triangle_out: Triangulation::with_capacity(64),
+            lyon: FillTessellator::new(),
+            lyon_out: VertexBuffers::new(),
+        }
+    }
+
+    /// Triangulates `prepared` with `imp` and returns the number of triangles.
+    ///
+    /// # Errors
+    ///
+    /// A message when the implementation refuses the input or panics on it (its state is
+    /// then replaced by a fresh one), or the input has non-finite coordinates.
+    pub fn run(&mut self, imp: Implementation, prepared: &Prepared) -> Result<usize, String> {
+        check_finite(&prepared.input)?;
+        // Peers panic on some inputs (see `peers::triangulate`); a benchmark reports that
+        // and goes on with the other implementations.
+        match catch_unwind(AssertUnwindSafe(|| self.run_unchecked(imp, prepared))) {
+            Ok(result) => result,
+            Err(panic) => {
+                *self = Runner::new();
+                Err(format!("{imp} panicked: {}", panic_message(&*panic)))
+            }
+        }
+    }
+
+    fn run_unchecked(&mut self, imp: Implementation, prepared: &Prepared) -> Result<usize, String> {
+        match imp {
+            Implementation::PolytriFast => self.polytri(prepared, polytri::Options::new()),
+            Implementation::PolytriLenient => {
+                self.polytri(prepared, polytri::Options::new().with_lenient(true))
+            }
+            Implementation::PolytriQuality => self.polytri(
+                prepared,
+                polytri::Options::new().with_strategy(polytri::Strategy::Quality),
+            ),
+            Implementation::Peer(Peer::Earcut) => Ok(self.earcut(prepared)),
+            Implementation::Peer(Peer::Earcutr) => earcutr(prepared),
+            Implementation::Peer(Peer::ITriangle) => Ok(self.i_triangle(prepared)),
+            Implementation::Peer(Peer::Lyon) => self.lyon(prepared),
+            Implementation::Peer(Peer::Spade) => spade(prepared),
+        }
+    }
+
+    /// polytri on the whole input for `Auto` and `FirstIsOuter`, else per polygon (each
+    /// first-is-outer, exactly as earcut gets it).
+    fn polytri(&mut self, prepared: &Prepared, options: polytri::Options) -> Result<usize, String> {
+        let input = &prepared.input;
+        if let Some(nesting) = input.nesting.to_polytri() {
+            let options = options.with_nesting(nesting);
+            return self
+                .polytri
+                .triangulate(
+                    &input.vertices,
+                    &input.ring_starts,
+                    &options,
+                    &mut self.polytri_out,
+                )
+                .map(|report| report.triangles)
+                .map_err(|e| e.to_string());
+        }
+        let options = options.with_nesting(polytri::Nesting::FirstIsOuter);
+        let mut triangles = 0;
+        for polygon in &prepared.polygons {
+            triangles += self
+                .polytri
+                .triangulate(
+                    &polygon.vertices,
+                    &polygon.ring_starts,
+                    &options,
+                    &mut self.polytri_out,
+                )
+                .map_err(|e| e.to_string())?
+                .triangles;
+        }
+        Ok(triangles)
+    }
+
+    fn earcut(&mut self, prepared: &Prepared) -> usize {
+        let mut triangles = 0;
+        for (polygon, holes) in prepared.polygons.iter().zip(&prepared.holes) {
+            self.earcut
+                .earcut_slice(&polygon.vertices, holes, &mut self.earcut_out);
+            triangles += self.earcut_out.len() / 3;
+        }
+        triangles
+    }
+
+    fn i_triangle(&mut self, prepared: &Prepared) -> usize {
+        self.i_triangle
+            .triangulate_into(&prepared.rings, &mut self.i_triangle_out);
+        self.i_triangle_out.indices.len() / 3
+    }
+
+    fn lyon(&mut self, prepared: &Prepared) -> Result<usize, String> {
+        self.lyon_out.vertices.clear();
+        self.lyon_out.indices.clear();
+        let mut builder =
+            BuffersBuilder::new(&mut self.lyon_out, |v: FillVertex| v.position().to_array());
+        self.lyon
+            .tessellate_path(&prepared.path, &super::lyon::options(), &mut builder)
+            .map_err(|e| format!("lyon: {e:?}"))?;
+        Ok(self.lyon_out.indices.len() / 3)
+    }
+}
+
+fn earcutr(prepared: &Prepared) -> Result<usize, String> {
+    let mut triangles = 0;
+    for (flat, polygon) in prepared.flat.iter().zip(&prepared.polygons) {
+        let out = ::earcutr::earcut(flat, &polygon.ring_starts[1..], 2)
+            .map_err(|e| format!("earcutr: {e:?}"))?;
+        triangles += out.len() / 3;
+    }
+    Ok(triangles)
+}
+
+fn spade(prepared: &Prepared) -> Result<usize, String> {
+    let cdt = prepared.constraints.triangulate()?;
+    Ok(super::spade::interior_faces(&cdt, &prepared.constraints.edges).len())
+}

@@ -9,9 +9,15 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
+mod bench;
+mod campaign;
+mod check;
 mod input;
 mod layout;
 mod output;
+mod precision;
+mod promote;
+mod replay;
 mod triangulate;
 
 /// Triangulate polygons with holes, and check the results.
@@ -27,6 +33,21 @@ struct Cli {
 enum Command {
     /// Triangulate the polygons of a JSON, GeoJSON or WKT file.
     Triangulate(triangulate::Args),
+    /// Where f32 and f64 triangulations stay valid: a report over scales, offsets and
+    /// feature sizes, polytri against earcut and i_triangle.
+    Precision(precision::Args),
+    /// Time polytri against earcut, earcutr, i_triangle, lyon and spade on the same inputs.
+    Bench(bench::Args),
+    /// Judge a triangulation of a file's polygons with the oracle's independent checks.
+    Check(check::Args),
+    /// Random cases of every generator family through polytri and the oracle; failing
+    /// cases are shrunk and written to the corpus.
+    Campaign(campaign::Args),
+    /// Replay corpus folders through polytri in every strategy, precision and rotation,
+    /// judged by the oracle, as a table.
+    Replay(replay::Args),
+    /// Turn a campaign case or a fuzz input into a corpus regression case.
+    Promote(promote::Args),
 }
 
 /// A failure the user should hear about: printed as one line on stderr, exit status 1.
@@ -65,6 +86,12 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Triangulate(args) => triangulate::run(&args),
+        Command::Precision(args) => precision::run(&args),
+        Command::Bench(args) => bench::run(&args),
+        Command::Check(args) => check::run(&args),
+        Command::Campaign(args) => campaign::run(&args),
+        Command::Replay(args) => replay::run(&args),
+        Command::Promote(args) => promote::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

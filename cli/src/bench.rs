@@ -1,0 +1,488 @@
+//! `polytri bench`: polytri against its peers on the same inputs, in one process.
+//!
+//! Fairness: every input is converted into each library's format before timing
+//! ([`Prepared`]); every implementation keeps its buffers between runs ([`Runner`]); the
+//! implementations take turns sample by sample (round robin, starting one further each
+//! round), so machine noise falls on all of them alike; each sample repeats a run often
+//! enough to last about a millisecond, so the timer's resolution does not matter; the
+//! median of the samples is reported.
+
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+use polytri_oracle::peers::{Implementation, Peer, Prepared, Runner};
+use polytri_oracle::{Input, Nesting, Role};
+use serde::Serialize;
+
+use crate::{input, say, Failure};
+
+/// earcut's benchmark fixtures, under `corpus/earcut/fixtures/`.
+const FIXTURES: [&str; 6] = [
+    "building",
+    "dude",
+    "water",
+    "water-huge",
+    "water-huge2",
+    "water3",
+];
+
+/// The paper-shaped datasets, under `corpus/datasets/`.
+const DATASETS: [&str; 7] = [
+    "letter_a",
+    "lorem_latin",
+    "lorem_japanese",
+    "lorem_japanese_noto",
+    "rect_circles",
+    "chinese_text",
+    "cjk_page",
+];
+
+/// How long one sample should last: long against the timer's resolution, short against
+/// the time budget.
+const SAMPLE: Duration = Duration::from_millis(1);
+
+/// Arguments of `polytri bench`.
+#[derive(Debug, clap::Args)]
+#[command(after_help = "\
+Without FILES: earcut's benchmark fixtures (building, dude, water, water-huge, \
+water-huge2, water3) and the paper datasets of corpus/datasets/, found from the current \
+directory upwards or from where polytri was built.
+
+Columns: per implementation the median time of one run in milliseconds and, in \
+parentheses, its ratio to the fastest peer on that input (polytri columns too: below 1 \
+means polytri is faster than every peer). polytri-fast is strict (the input is checked \
+for crossings), polytri-lenient skips that check. The last row is the geometric mean of \
+the ratios. Files with several polygons go to earcut and polytri one polygon at a time, \
+to the others all at once.")]
+pub struct Args {
+    /// Inputs: rings JSON, shapes JSON, GeoJSON or WKT
+    #[arg(value_name = "FILES")]
+    pub files: Vec<PathBuf>,
+
+    /// Peers to compare with, comma-separated [default: all]
+    #[arg(long, value_delimiter = ',', value_name = "PEERS",
+          value_parser = parse_peer)]
+    pub peers: Option<Vec<Peer>>,
+
+    /// Time budget per input, shared by all implementations
+    #[arg(long, value_name = "S", default_value_t = 1.0)]
+    pub seconds: f64,
+
+    /// A quick look: 0.05 s per input, at least 3 samples each
+    #[arg(long)]
+    pub quick: bool,
+
+    /// Print the results as JSON on stdout instead of a table
+    #[arg(long)]
+    pub json: bool,
+}
+
+fn parse_peer(s: &str) -> Result<Peer, String> {
+    s.parse()
+}
+
+/// One implementation's result on one input.
+#[derive(Debug, Clone, Serialize)]
+struct Timing {
+    implementation: String,
+    /// Median milliseconds per run; `None` when it refused the input.
+    median_ms: Option<f64>,
+    /// `median_ms` over the fastest peer's.
+    ratio: Option<f64>,
+    triangles: Option<usize>,
+    samples: usize,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    error: Option<String>,
+}
+
+/// Every implementation's result on one input.
+#[derive(Debug, Clone, Serialize)]
+struct Row {
+    input: String,
+    vertices: usize,
+    /// polytri-fast's triangle count (or the first implementation's that succeeded).
+    triangles: Option<usize>,
+    timings: Vec<Timing>,
+}
+
+/// The whole report, as `--json` prints it.
+#[derive(Debug, Serialize)]
+struct Report {
+    implementations: Vec<String>,
+    rows: Vec<Row>,
+    /// Per implementation, the geometric mean of its ratios over the inputs it ran.
+    geometric_mean: Vec<Option<f64>>,
+}
+
+/// Runs `polytri bench`.
+///
+/// # Errors
+///
+/// A [`Failure`] when an input cannot be read or the corpus cannot be found.
+pub fn run(args: &Args) -> Result<(), Failure> {
+    if !(args.seconds >= 0.0 && args.seconds.is_finite()) {
+        return Err(Failure(format!(
+            "--seconds must be a finite number ≥ 0, not {}",
+            args.seconds
+        )));
+    }
+    let inputs = load_inputs(&args.files)?;
+    let peers = args.peers.clone().unwrap_or_else(|| Peer::ALL.to_vec());
+    let implementations: Vec<Implementation> = Implementation::POLYTRI
+        .into_iter()
+        .chain(peers.into_iter().map(Implementation::Peer))
+        .collect();
+    let (budget, min_samples) = if args.quick {
+        (Duration::from_millis(50), 3)
+    } else {
+        (Duration::from_secs_f64(args.seconds), 5)
+    };
+    let mut rows = Vec::with_capacity(inputs.len());
+    for (k, (name, input)) in inputs.iter().enumerate() {
+        say(format_args!(
+            "polytri bench: [{}/{}] {name} ({} vertices)",
+            k + 1,
+            inputs.len(),
+            input.vertices.len()
+        ));
+        rows.push(measure(name, input, &implementations, budget, min_samples));
+    }
+    let report = Report {
+        implementations: implementations.iter().map(ToString::to_string).collect(),
+        geometric_mean: (0..implementations.len())
+            .map(|i| geometric_mean(rows.iter().filter_map(|row| row.timings[i].ratio)))
+            .collect(),
+        rows,
+    };
+    if args.json {
+        let text = serde_json::to_string_pretty(&report)
+            .map_err(|e| Failure(format!("cannot write JSON: {e}")))?;
+        println!("{text}");
+    } else {
+        print!("{}", table(&report));
+    }
+    Ok(())
+}
+
+/// The inputs by name: the files given, or else the default fixtures and datasets.
+fn load_inputs(files: &[PathBuf]) -> Result<Vec<(String, Input)>, Failure> {
+    let paths: Vec<PathBuf> = if files.is_empty() {
+        let corpus = find_corpus().ok_or_else(|| {
+            Failure(
+                "no FILES given and no corpus/ directory found from here upwards; \
+                 run from the repository or name the files"
+                    .to_owned(),
+            )
+        })?;
+        FIXTURES
+            .iter()
+            .map(|f| corpus.join("earcut/fixtures").join(format!("{f}.json")))
+            .chain(
+                DATASETS
+                    .iter()
+                    .map(|d| corpus.join("datasets").join(format!("{d}.json"))),
+            )
+            .collect()
+    } else {
+        files.to_vec()
+    };
+    paths
+        .iter()
+        .map(|path| {
+            let read = input::read(path)?;
+            Ok((short_name(path), to_oracle_input(&read.polygons)))
+        })
+        .collect()
+}
+
+/// The corpus directory: `corpus/` in the current directory or one above it, else the
+/// repository polytri was built from.
+fn find_corpus() -> Option<PathBuf> {
+    let marker = |dir: &Path| dir.join("earcut/fixtures").is_dir();
+    let here = std::env::current_dir().ok();
+    here.iter()
+        .flat_map(|dir| dir.ancestors())
+        .map(|dir| dir.join("corpus"))
+        .chain(std::iter::once(
+            Path::new(env!("CARGO_MANIFEST_DIR")).join("../corpus"),
+        ))
+        .find(|dir| marker(dir))
+}
+
+/// A file's name without directory and `.json` extension.
+fn short_name(path: &Path) -> String {
+    let name = input::display_name(path);
+    let base = Path::new(&name)
+        .file_name()
+        .map_or(name.clone(), |f| f.to_string_lossy().into_owned());
+    base.strip_suffix(".json").unwrap_or(&base).to_owned()
+}
+
+/// One polygon: first ring outer, the rest holes; several: each one's first ring outer.
+fn to_oracle_input(polygons: &[input::Polygon]) -> Input {
+    let rings: Vec<Vec<[f64; 2]>> = polygons.iter().flatten().cloned().collect();
+    if polygons.len() == 1 {
+        return Input::from_rings(&rings, Nesting::FirstIsOuter);
+    }
+    let roles = polygons
+        .iter()
+        .flat_map(|polygon| {
+            (0..polygon.len()).map(|k| if k == 0 { Role::Outer } else { Role::Hole })
+        })
+        .collect();
+    Input::from_rings(&rings, Nesting::Roles(roles))
+}
+
+/// One implementation's state while an input is measured.
+struct Contestant {
+    implementation: Implementation,
+    /// Runs per sample.
+    batch: u32,
+    /// Seconds per run, one entry per sample.
+    samples: Vec<f64>,
+    triangles: Option<usize>,
+    error: Option<String>,
+}
+
+/// Measures every implementation on `input`, round robin, within `budget` (but at least
+/// `min_samples` samples each).
+fn measure(
+    name: &str,
+    input: &Input,
+    implementations: &[Implementation],
+    budget: Duration,
+    min_samples: usize,
+) -> Row {
+    let prepared = Prepared::new(input);
+    let mut runner = Runner::new();
+    let mut contestants: Vec<Contestant> = implementations
+        .iter()
+        .map(|&imp| calibrate(&mut runner, imp, &prepared))
+        .collect();
+    let start = Instant::now();
+    for round in 0.. {
+        let live = contestants.iter().filter(|c| c.error.is_none()).count();
+        let enough = contestants
+            .iter()
+            .all(|c| c.error.is_some() || c.samples.len() >= min_samples);
+        if live == 0 || (enough && start.elapsed() >= budget) {
+            break;
+        }
+        let n = contestants.len();
+        for k in 0..n {
+            let c = &mut contestants[(round + k) % n];
+            if c.error.is_some() {
+                continue;
+            }
+            let began = Instant::now();
+            for _ in 0..c.batch {
+                if let Err(e) = runner.run(c.implementation, std::hint::black_box(&prepared)) {
+                    c.error = Some(e);
+                    break;
+                }
+            }
+            c.samples
+                .push(began.elapsed().as_secs_f64() / f64::from(c.batch));
+        }
+    }
+    for c in &contestants {
+        if let Some(error) = &c.error {
+            say(format_args!(
+                "polytri bench: {name}: {} failed: {error}",
+                c.implementation
+            ));
+        }
+    }
+    row(name, input, contestants)
+}
+
+/// Runs `imp` once to warm up and learn its triangle count, then times one run to choose
+/// the batch size.
+fn calibrate(runner: &mut Runner, imp: Implementation, prepared: &Prepared) -> Contestant {
+    let mut contestant = Contestant {
+        implementation: imp,
+        batch: 1,
+        samples: Vec::new(),
+        triangles: None,
+        error: None,
+    };
+    match runner.run(imp, prepared) {
+        Ok(triangles) => contestant.triangles = Some(triangles),
+        Err(e) => {
+            contestant.error = Some(e);
+            return contestant;
+        }
+    }
+    let began = Instant::now();
+    let _ = runner.run(imp, prepared);
+    let once = began.elapsed().max(Duration::from_nanos(1));
+    contestant.batch = (SAMPLE.as_secs_f64() / once.as_secs_f64()).clamp(1.0, 1e6) as u32;
+    contestant
+}
+
+/// The row of one input: medians and ratios to the fastest peer.
+fn row(name: &str, input: &Input, contestants: Vec<Contestant>) -> Row {
+    let medians: Vec<Option<f64>> = contestants
+        .iter()
+        .map(|c| c.error.is_none().then(|| median(&c.samples)).flatten())
+        .collect();
+    let best_peer = contestants
+        .iter()
+        .zip(&medians)
+        .filter(|(c, _)| !c.implementation.is_polytri())
+        .filter_map(|(_, m)| *m)
+        .min_by(f64::total_cmp);
+    let triangles = contestants
+        .iter()
+        .find(|c| c.implementation == Implementation::PolytriFast)
+        .and_then(|c| c.triangles)
+        .or_else(|| contestants.iter().find_map(|c| c.triangles));
+    let timings = contestants
+        .into_iter()
+        .zip(medians)
+        .map(|(c, m)| Timing {
+            implementation: c.implementation.to_string(),
+            median_ms: m.map(|s| s * 1e3),
+            ratio: m.zip(best_peer).map(|(m, best)| m / best),
+            triangles: c.triangles.filter(|_| c.error.is_none()),
+            samples: c.samples.len(),
+            error: c.error,
+        })
+        .collect();
+    Row {
+        input: name.to_owned(),
+        vertices: input.vertices.len(),
+        triangles,
+        timings,
+    }
+}
+
+fn median(samples: &[f64]) -> Option<f64> {
+    let mut sorted = samples.to_vec();
+    sorted.sort_by(f64::total_cmp);
+    let n = sorted.len();
+    match n {
+        0 => None,
+        _ if n % 2 == 1 => Some(sorted[n / 2]),
+        _ => Some((sorted[n / 2 - 1] + sorted[n / 2]) / 2.0),
+    }
+}
+
+fn geometric_mean(values: impl Iterator<Item = f64>) -> Option<f64> {
+    let (sum, count) = values
+        .filter(|v| *v > 0.0)
+        .fold((0.0, 0usize), |(s, n), v| (s + v.ln(), n + 1));
+    (count > 0).then(|| (sum / count as f64).exp())
+}
+
+/// Milliseconds with four significant digits (at most nine decimals).
+fn format_ms(ms: f64) -> String {
+    let magnitude = if ms > 0.0 { ms.log10().floor() } else { 0.0 };
+    let decimals = (3.0 - magnitude).clamp(0.0, 9.0) as usize;
+    format!("{ms:.decimals$}")
+}
+
+fn format_ratio(ratio: Option<f64>) -> String {
+    ratio.map_or_else(|| "(–)".to_owned(), |r| format!("({r:.2}×)"))
+}
+
+/// The report as an aligned text table.
+fn table(report: &Report) -> String {
+    let mut lines: Vec<Vec<String>> = Vec::new();
+    let mut header = vec![
+        "input".to_owned(),
+        "vertices".to_owned(),
+        "triangles".to_owned(),
+    ];
+    header.extend(report.implementations.iter().map(|i| format!("{i} ms")));
+    lines.push(header);
+    for row in &report.rows {
+        let mut line = vec![
+            row.input.clone(),
+            row.vertices.to_string(),
+            row.triangles.map_or("–".to_owned(), |t| t.to_string()),
+        ];
+        line.extend(row.timings.iter().map(|t| match t.median_ms {
+            Some(ms) => format!("{} {}", format_ms(ms), format_ratio(t.ratio)),
+            None => "failed".to_owned(),
+        }));
+        lines.push(line);
+    }
+    let mut mean = vec!["geometric mean".to_owned(), String::new(), String::new()];
+    mean.extend(report.geometric_mean.iter().map(|&g| format_ratio(g)));
+    lines.push(mean);
+
+    let columns = lines[0].len();
+    let width: Vec<usize> = (0..columns)
+        .map(|c| {
+            lines
+                .iter()
+                .map(|l| l[c].chars().count())
+                .max()
+                .unwrap_or(0)
+        })
+        .collect();
+    let mut out = String::new();
+    for line in &lines {
+        let cells: Vec<String> = line
+            .iter()
+            .enumerate()
+            .map(|(c, cell)| {
+                let pad = " ".repeat(width[c] - cell.chars().count());
+                // names left, numbers right
+                if c == 0 {
+                    format!("{cell}{pad}")
+                } else {
+                    format!("{pad}{cell}")
+                }
+            })
+            .collect();
+        out.push_str(cells.join("  ").trim_end());
+        out.push('\n');
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn median_and_geometric_mean() {
+        assert_eq!(median(&[3.0, 1.0, 2.0]), Some(2.0));
+        assert_eq!(median(&[4.0, 1.0, 2.0, 3.0]), Some(2.5));
+        assert_eq!(median(&[]), None);
+        let g = geometric_mean([2.0, 8.0].into_iter()).expect("two values");
+        assert!((g - 4.0).abs() < 1e-12);
+        assert_eq!(geometric_mean(std::iter::empty()), None);
+    }
+
+    #[test]
+    fn milliseconds_keep_four_digits() {
+        assert_eq!(format_ms(0.000_412_34), "0.0004123");
+        assert_eq!(format_ms(1.234_56), "1.235");
+        assert_eq!(format_ms(1234.6), "1235");
+    }
+
+    #[test]
+    fn ratios_are_to_the_fastest_peer() {
+        let contestant = |implementation, samples: Vec<f64>| Contestant {
+            implementation,
+            batch: 1,
+            samples,
+            triangles: Some(2),
+            error: None,
+        };
+        let row = row(
+            "square",
+            &Input::default(),
+            vec![
+                contestant(Implementation::PolytriFast, vec![1.0]),
+                contestant(Implementation::Peer(Peer::Earcut), vec![2.0]),
+                contestant(Implementation::Peer(Peer::Lyon), vec![4.0]),
+            ],
+        );
+        let ratios: Vec<_> = row.timings.iter().map(|t| t.ratio).collect();
+        assert_eq!(ratios, vec![Some(0.5), Some(1.0), Some(2.0)]);
+    }
+}

@@ -1,0 +1,117 @@
+//! `polytri check` end to end: the built binary judging results of `polytri triangulate`.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use serde_json::Value;
+
+/// A fresh directory for one test, so tests running in parallel never share files.
+fn scratch(test: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("polytri-cli-check-{}-{test}", std::process::id()));
+    // Left over from an earlier run with the same pid: start clean.
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).expect("create scratch directory");
+    dir
+}
+
+fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
+    let path = dir.join(name);
+    fs::write(&path, text).expect("write fixture");
+    path
+}
+
+fn polytri(args: &[&Path]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_polytri"))
+        .args(args)
+        .output()
+        .expect("run polytri")
+}
+
+fn path(s: &str) -> &Path {
+    Path::new(s)
+}
+
+/// Two polygons, one with a hole touching its outer ring at a vertex.
+const SHAPES: &str = "[
+    [[[0,0],[10,0],[10,10],[0,10]], [[0,0],[3,2],[2,3]], [[5,5],[5,7],[7,7],[7,5]]],
+    [[[20,0],[30,0],[25,8]]]
+]";
+
+/// Triangulates `SHAPES` into `dir/result.json` and returns the input and result paths.
+fn triangulated(dir: &Path) -> (PathBuf, PathBuf) {
+    let input = write(dir, "shapes.json", SHAPES);
+    let result = dir.join("result.json");
+    let out = polytri(&[
+        path("triangulate"),
+        &input,
+        path("-o"),
+        &result,
+        path("--quiet"),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    (input, result)
+}
+
+#[test]
+fn accepts_what_triangulate_wrote() {
+    let dir = scratch("accepts");
+    let (input, result) = triangulated(&dir);
+    let out = polytri(&[path("check"), &input, &result]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
+    let verdict: Value = serde_json::from_slice(&out.stdout).expect("verdict JSON");
+    assert_eq!(verdict["valid"], true);
+    assert_eq!(verdict["input_valid"], true);
+    // The first polygon: its outer boundary pinched by the touching hole has 7 corners,
+    // the other hole 4: 11 − 2 + 2·1 = 11 triangles. And the triangle.
+    assert_eq!(verdict["expected_triangles"], 12);
+    assert!(verdict["cdt"].is_object());
+    let fast = polytri(&[path("check"), &input, &result, path("--fast")]);
+    assert!(fast.status.success());
+    let verdict: Value = serde_json::from_slice(&fast.stdout).expect("verdict JSON");
+    assert!(verdict["cdt"].is_null());
+}
+
+#[test]
+fn rejects_a_broken_result_naming_the_check() {
+    let dir = scratch("rejects");
+    let (input, result) = triangulated(&dir);
+    let mut json: Value =
+        serde_json::from_str(&fs::read_to_string(&result).expect("read")).expect("JSON");
+    // Flip the first triangle.
+    let t = json["triangles"][0].as_array_mut().expect("triangle");
+    t.swap(1, 2);
+    let broken = write(&dir, "broken.json", &json.to_string());
+    let out = polytri(&[path("check"), &input, &broken]);
+    assert_eq!(out.status.code(), Some(1));
+    let verdict: Value = serde_json::from_slice(&out.stdout).expect("verdict JSON on stdout");
+    assert_eq!(verdict["valid"], false);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(stderr.contains("orientation: triangle 0"), "{stderr}");
+}
+
+#[test]
+fn says_when_the_result_is_of_another_input() {
+    let dir = scratch("mismatch");
+    let (input, result) = triangulated(&dir);
+    let other = write(&dir, "other.json", "[[[0,0],[1,0],[0,1]]]");
+    let out = polytri(&[path("check"), &other, &result]);
+    assert_eq!(out.status.code(), Some(1));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("not of this input"), "{stderr}");
+    let moved = fs::read_to_string(&result)
+        .expect("read")
+        .replacen("[0.0,0.0]", "[0.5,0.0]", 1);
+    let moved = write(&dir, "moved.json", &moved);
+    let out = polytri(&[path("check"), &input, &moved]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("vertex 0"), "{stderr}");
+    let usage = polytri(&[path("check"), &input]);
+    assert_eq!(usage.status.code(), Some(2));
+}

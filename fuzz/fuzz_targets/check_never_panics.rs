@@ -1,0 +1,11 @@
+//! Fuzz target `check_never_panics`: see `polytri_oracle::fuzz::check_never_panics` for what it asserts.
+#![no_main]
+
+use libfuzzer_sys::fuzz_target;
+
+fuzz_target!(|data: &[u8]| {
+    // A finding prints as a JSON corpus case, ready for corpus/cases/.
+    if let Err(finding) = polytri_oracle::fuzz::check_never_panics(data) {
+        panic!("{finding}");
+    }
+});

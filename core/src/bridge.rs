@@ -80,7 +80,15 @@ fn eliminate_hole(cx: &mut Context, hole: usize) -> Result<(), Error> {
                     return Ok(());
                 }
             },
-            None => return Err(Error::Internal { stage: "bridge" }),
+            // Every hole of a valid input has a boundary around it, so the ray from M
+            // always meets one. Here the hole is a lobe of a ring that winds both ways.
+            None => {
+                let node = cx.pool.get(m);
+                return Err(Error::LobesWindOpposite {
+                    ring: cx.rings[node.ring as usize].input as usize,
+                    vertex: node.vertex as usize,
+                });
+            }
         },
     };
     let x = match target {
@@ -354,8 +362,13 @@ fn visible_node_at(cx: &Context, target: Point, pm: Point, component: u32) -> Op
         }
         fallback = fallback.or(Some(x));
     }
-    // no corner contains M strictly: only for invalid (lenient) input
-    fallback
+    // No corner contains M strictly: M lies outside the boundary it sees, which only
+    // invalid input allows (a lobe winding the other way). Strict mode refuses it.
+    if cx.lenient {
+        fallback
+    } else {
+        None
+    }
 }
 
 #[cfg(test)]

@@ -242,7 +242,7 @@ impl<'a> Clipper<'a> {
                 stop = ear;
             }
         }
-        self.finish(ear);
+        self.finish(ear)?;
         Ok(())
     }
 
@@ -283,7 +283,7 @@ impl<'a> Clipper<'a> {
                 last
             });
         }
-        self.finish(last);
+        self.finish(last)?;
         Ok(())
     }
 
@@ -503,15 +503,28 @@ impl<'a> Clipper<'a> {
         true
     }
 
-    /// The last triangle, when it has area.
-    fn finish(&mut self, n: NodeId) {
+    /// The last triangle, when it has area. A clockwise one is a lobe winding against the
+    /// rest of its ring: strict mode refuses it, lenient mode drops it.
+    fn finish(&mut self, n: NodeId) -> Result<(), Error> {
         if self.len == 3 && !self.cx.pool.get(n).removed {
             let (a, c) = (self.cx.pool.prev(n), self.cx.pool.next(n));
-            if orient2d(self.cx.pool.p(a), self.cx.pool.p(n), self.cx.pool.p(c))
-                == Orientation::CounterClockwise
-            {
-                self.emit(a, n, c);
+            match orient2d(self.cx.pool.p(a), self.cx.pool.p(n), self.cx.pool.p(c)) {
+                Orientation::CounterClockwise => self.emit(a, n, c),
+                Orientation::Clockwise if !self.cx.lenient => {
+                    return Err(self.winds_opposite(n));
+                }
+                _ => {}
             }
+        }
+        Ok(())
+    }
+
+    /// The error for a piece around `n` that turns clockwise (strict mode).
+    fn winds_opposite(&self, n: NodeId) -> Error {
+        let node = self.cx.pool.get(n);
+        Error::LobesWindOpposite {
+            ring: self.cx.rings[node.ring as usize].input as usize,
+            vertex: node.vertex as usize,
         }
     }
 
@@ -535,7 +548,17 @@ impl<'a> Clipper<'a> {
         }
         let Some(convex) = convex else {
             // all straight or reflex: no area left (a counter-clockwise ring with area has
-            // a left turn), so this piece is done
+            // a left turn), so this piece is done — unless it turns right somewhere: then
+            // it is a lobe winding against the rest of its ring, which strict mode refuses
+            if !self.cx.lenient {
+                let mut n = at;
+                for _ in 0..self.len {
+                    if turn(self.cx, n) == Orientation::Clockwise {
+                        return Err(self.winds_opposite(n));
+                    }
+                    n = self.cx.pool.next(n);
+                }
+            }
             self.note(RepairKind::DegeneratePiece, at);
             self.len = 0;
             return Ok(at);

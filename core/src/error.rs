@@ -69,6 +69,16 @@ pub enum Error {
         /// The misplaced hole.
         ring: usize,
     },
+    /// A ring winds both ways: it touches itself (at a vertex, or along a stretch it runs
+    /// twice in opposite directions) so that one of its lobes turns clockwise and another
+    /// counter-clockwise, side by side — a figure eight. Which lobe is inside is undefined
+    /// (strict mode only).
+    LobesWindOpposite {
+        /// The ring.
+        ring: usize,
+        /// A vertex of the lobe that winds the other way.
+        vertex: usize,
+    },
     /// polytri failed where it should not have: **this is a bug, please report it** with the
     /// input at <https://github.com/polytri/polytri/issues>.
     Internal {
@@ -111,6 +121,10 @@ impl fmt::Display for Error {
             Error::HoleOutside { ring } => write!(
                 f,
                 "ring {ring} is given as a hole but is not inside the outer ring (or lies in another hole)"
+            ),
+            Error::LobesWindOpposite { ring, vertex } => write!(
+                f,
+                "ring {ring} winds both ways: the lobe at vertex {vertex} turns the other way round than the rest (a figure eight)"
             ),
             Error::Internal { stage } => write!(
                 f,

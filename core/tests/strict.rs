@@ -507,3 +507,47 @@ fn degenerate_fixtures_finish() {
         failures.join("\n")
     );
 }
+
+/// A figure eight whose lobes meet along a wall the ring runs down and later up again
+/// (x = -1, y from -1 to 0): the upper lobe turns counter-clockwise, the lower one
+/// clockwise. No edges cross, yet no region is bounded consistently. Found by the
+/// `raw_rings` fuzz target, where strict mode reported an internal error.
+#[test]
+fn lobes_winding_opposite_ways_along_a_wall_are_refused() {
+    let ring = [
+        [-1.0, 1.0],
+        [-1.0, -1.0],
+        [0.0, -2.0],
+        [-1.0, -5.0],
+        [-1.0, 0.0],
+        [0.0, 0.0],
+    ];
+    for rotation in 0..4 {
+        let turned: Vec<[f64; 2]> = ring
+            .iter()
+            .map(|&p| (0..rotation).fold(p, |[x, y], _| [-y, x]))
+            .collect();
+        for strategy in [Strategy::Fast, Strategy::Quality] {
+            let err = match tri_f64(&turned, &[0], strict(strategy)) {
+                Ok(n) => panic!("rotation {rotation}, {strategy:?}: Ok with {n} triangles"),
+                Err(e) => e,
+            };
+            let Error::LobesWindOpposite { ring: 0, vertex } = err else {
+                panic!("rotation {rotation}, {strategy:?}: {err:?}");
+            };
+            assert!(vertex < ring.len(), "{err}");
+            assert!(err.to_string().contains("winds both ways"), "{err}");
+            let mut out = Vec::new();
+            let err32 = Triangulator::<f32>::new()
+                .triangulate(&to_f32(&turned), &[0], &strict(strategy), &mut out)
+                .unwrap_err();
+            assert!(
+                matches!(err32, Error::LobesWindOpposite { ring: 0, .. }),
+                "{err32:?}"
+            );
+            // Lenient mode makes the best of it: a result, never an error.
+            let lenient = strict(strategy).with_lenient(true);
+            assert!(tri_f64(&turned, &[0], lenient).is_ok());
+        }
+    }
+}

@@ -17,13 +17,16 @@
 //!    number of other such rings it lies inside): even for outer rings, odd for holes. With
 //!    [`Nesting::Auto`] the depth assigns the role;
 //! 4. around every vertex, the values of `w` in the sectors between the boundary edges
-//!    through it span at most two consecutive integers.
+//!    through it span at most two consecutive integers;
+//! 5. and those values are 0 or 1.
 //!
 //! (2) and (3) make the rings a laminar family whose signed windings alternate
 //! 1, 0, 1, … with depth; (4) rules out rings that wind twice or touch themselves with lobes
-//! of opposite orientation (a bow tie pinched at a vertex) — the cases where the first
-//! three hold but `w` leaves {0, 1}. Together they give `w ∈ {0, 1}` everywhere, so the
-//! region's area is exactly `½ Σ_r f_r · shoelace_r`.
+//! of opposite orientation (a bow tie pinched at a vertex) with a message that says where;
+//! (5) also catches lobes of opposite orientation joined by a wall the ring runs along in
+//! both directions, where every vertex sees only two consecutive values but one lobe has
+//! `w = −1`. Every face of the arrangement has a vertex on its boundary, so together they
+//! give `w ∈ {0, 1}` everywhere, and the region's area is exactly `½ Σ_r f_r · shoelace_r`.
 
 use std::cmp::Ordering;
 use std::collections::HashMap;
@@ -38,6 +41,23 @@ use crate::input::{Input, Nesting, Role};
 
 /// How many problems of the input are spelled out; the rest are only counted.
 const MAX_PROBLEMS: usize = 1;
+
+/// Per position, its sectors as [`Region::vertex_star`] found them.
+#[derive(Default)]
+struct Stars {
+    /// Per sorted star entry: the index of its direction group at its position.
+    group: Vec<u32>,
+    /// Per position, consecutively: the value of each sector relative to the sector
+    /// before the first ray.
+    sums: Vec<i64>,
+    first_sum: HashMap<u32, usize>,
+    first_sum_end: HashMap<u32, usize>,
+}
+
+/// `a` before `b` by x, then y.
+fn lex_less(a: P, b: P) -> bool {
+    (a[0], a[1]) < (b[0], b[1])
+}
 
 /// One ring edge of non-zero length, as vertex indices into the input.
 #[derive(Clone, Copy, Debug)]
@@ -516,7 +536,7 @@ impl Region {
         }
     }
 
-    /// The pieces and stars of the boundary, then condition 4 and the angles.
+    /// The pieces and stars of the boundary, then conditions 4 and 5 and the angles.
     fn build_pieces(&mut self) {
         let mut stars: Vec<(u32, u32, i32)> = Vec::with_capacity(2 * self.edges.len());
         let mut chain = Vec::new();
@@ -543,6 +563,7 @@ impl Region {
                 .then_with(|| cmp_around(pts[x.0 as usize], pts[x.1 as usize], pts[y.1 as usize]))
         });
         self.theta = vec![f64::NAN; self.pts.len()];
+        let mut stars_of = Stars::default();
         let mut i = 0;
         while i < stars.len() {
             let at = stars[i].0;
@@ -550,13 +571,15 @@ impl Region {
             while j < stars.len() && stars[j].0 == at {
                 j += 1;
             }
-            self.vertex_star(at, &stars[i..j]);
+            self.vertex_star(at, &stars[i..j], &mut stars_of);
             i = j;
         }
+        self.check_absolute_winding(&stars, &stars_of);
     }
 
-    /// Condition 4 at one position, and the region's angle there.
-    fn vertex_star(&mut self, at: u32, star: &[(u32, u32, i32)]) {
+    /// Condition 4 at one position, and the region's angle there; records the position's
+    /// sectors in `out` for condition 5.
+    fn vertex_star(&mut self, at: u32, star: &[(u32, u32, i32)], out: &mut Stars) {
         let x = self.pts[at as usize];
         // Group rays of equal direction: no sector lies between them.
         let mut groups: Vec<(P, i64)> = Vec::new();
@@ -566,6 +589,7 @@ impl Region {
                 Some(g) if cmp_around(x, g.0, d) == Ordering::Equal => g.1 += i64::from(jump),
                 _ => groups.push((d, i64::from(jump))),
             }
+            out.group.push((groups.len() - 1) as u32);
         }
         let mut sums = Vec::with_capacity(groups.len());
         let mut s = 0;
@@ -573,6 +597,9 @@ impl Region {
             s += g.1;
             sums.push(s);
         }
+        out.first_sum.insert(at, out.sums.len());
+        out.sums.extend_from_slice(&sums);
+        out.first_sum_end.insert(at, out.sums.len());
         let (lo, hi) = (
             sums.iter().copied().min().unwrap_or(0),
             sums.iter().copied().max().unwrap_or(0),
@@ -614,6 +641,110 @@ impl Region {
             theta += sector.max(0.0);
         }
         self.theta[at as usize] = theta;
+    }
+
+    /// Condition 5: `w ∈ {0, 1}` in every sector around every position, absolutely.
+    ///
+    /// Conditions 1–4 only see differences of `w`. Lobes of opposite orientation joined by
+    /// a wall the ring runs along twice (in opposite directions, so the wall cancels) pass
+    /// all four, yet `w` is 1 in one lobe and −1 in the other. So: the value of sector `k`
+    /// at position `x` is `base[x] + sums_x[k]`; the face left of a piece `u → v` is one
+    /// face at both ends, which ties `base[v]` to `base[u]` through the boundary graph; and
+    /// one winding query per connected component fixes its base absolutely.
+    fn check_absolute_winding(&mut self, stars: &[(u32, u32, i32)], s: &Stars) {
+        let index_of: HashMap<(u32, u32), usize> = stars
+            .iter()
+            .enumerate()
+            .map(|(i, &(u, v, _))| ((u, v), i))
+            .collect();
+        let mut first = HashMap::with_capacity(s.first_sum.len());
+        for (i, &(u, _, _)) in stars.iter().enumerate() {
+            first.entry(u).or_insert(i);
+        }
+        // Sector values relative to the sector before the first ray (which closes at 0).
+        let sums = |x: u32| &s.sums[s.first_sum[&x]..s.first_sum_end[&x]];
+        let mut base: HashMap<u32, i64> = HashMap::with_capacity(first.len());
+        let mut component: HashMap<u32, u32> = HashMap::with_capacity(first.len());
+        let mut roots = Vec::new();
+        let mut order: Vec<u32> = first.keys().copied().collect();
+        order.sort_unstable();
+        let mut queue = Vec::new();
+        for &start in &order {
+            if component.contains_key(&start) {
+                continue;
+            }
+            let c = roots.len() as u32;
+            component.insert(start, c);
+            base.insert(start, 0);
+            queue.push(start);
+            let mut root = start;
+            while let Some(u) = queue.pop() {
+                if lex_less(self.pts[u as usize], self.pts[root as usize]) {
+                    root = u;
+                }
+                let mut i = first[&u];
+                while i < stars.len() && stars[i].0 == u {
+                    let v = stars[i].1;
+                    if let std::collections::hash_map::Entry::Vacant(slot) = component.entry(v) {
+                        slot.insert(c);
+                        let back = index_of[&(v, u)];
+                        let (su, sv) = (sums(u), sums(v));
+                        let left_at_u = su[s.group[i] as usize];
+                        let gv = s.group[back] as usize;
+                        let left_at_v = sv[(gv + sv.len() - 1) % sv.len()];
+                        base.insert(v, base[&u] + left_at_u - left_at_v);
+                        queue.push(v);
+                    }
+                    i += 1;
+                }
+            }
+            roots.push(root);
+        }
+        // Per component: at its lexicographically smallest position p every ray points
+        // right or straight up, so the sector containing the direction π is next to p on
+        // the left, where the component itself winds 0 and the others wind as at p.
+        let mut offset = vec![0i64; roots.len()];
+        let mut stamps = self.stamps();
+        for (c, &p) in roots.iter().enumerate() {
+            let mut w = 0i64;
+            self.for_each_step(
+                &Probe::point(self.pts[p as usize]),
+                &mut stamps,
+                |e, step| {
+                    if component.get(&self.rep[e.a as usize]) != Some(&(c as u32)) {
+                        w += step.unwrap_or(0) * i64::from(self.factor[e.ring as usize]);
+                    }
+                },
+            );
+            let (x, ps) = (self.pts[p as usize], sums(p));
+            // Rays at p in counter-clockwise order from angle 0: those with dy ≥ 0 first.
+            let mut k = ps.len() - 1;
+            let mut g = 0;
+            let mut i = first[&p];
+            let mut last = None;
+            while i < stars.len() && stars[i].0 == p {
+                let d = self.pts[stars[i].1 as usize];
+                if d[1] >= x[1] && last != Some(s.group[i]) {
+                    k = g;
+                    g += 1;
+                }
+                last = Some(s.group[i]);
+                i += 1;
+            }
+            offset[c] = w - (base[&p] + ps[k]);
+        }
+        for &x in &order {
+            let b = base[&x] + offset[component[&x] as usize];
+            let bad = sums(x)
+                .iter()
+                .map(|&d| b + d)
+                .find(|w| !(0..=1).contains(w));
+            if let Some(w) = bad {
+                self.problem(|| {
+                    format!("the winding number next to vertex {x} is {w}, not 0 or 1: a ring winds twice, or has lobes of opposite orientation")
+                });
+            }
+        }
     }
 
     /// `Σ θ_v / π` over the representatives `used`: the number of triangles any
@@ -725,6 +856,54 @@ mod tests {
             "{:?}",
             r.problems
         );
+    }
+
+    #[test]
+    fn lobes_of_opposite_orientation_joined_by_a_wall_are_invalid() {
+        // Found by the raw_rings fuzz target: the ring runs down x = -1 from y = 1 to -1
+        // and later up from -5 to 0, so [-1, 0] is a wall walked both ways. The upper lobe
+        // turns counter-clockwise, the lower one clockwise: a figure eight.
+        let ring = [
+            [-1.0, 1.0],
+            [-1.0, -1.0],
+            [0.0, -2.0],
+            [-1.0, -5.0],
+            [-1.0, 0.0],
+            [0.0, 0.0],
+        ];
+        for rotation in 0..4 {
+            let turned: Vec<P> = ring
+                .iter()
+                .map(|&p| (0..rotation).fold(p, |[x, y], _| [-y, x]))
+                .collect();
+            let r = region(&[turned], Nesting::Auto);
+            assert!(
+                r.problems.iter().any(|p| p.contains("not 0 or 1")),
+                "rotation {rotation}: {:?}",
+                r.problems
+            );
+        }
+        // The same wall with both lobes counter-clockwise is a valid, weakly simple ring.
+        let ring = vec![
+            [-1.0, 1.0],
+            [-1.0, -1.0],
+            [-2.0, -2.0],
+            [-1.0, -5.0],
+            [-1.0, 0.0],
+            [0.0, 0.0],
+        ];
+        let r = region(&[ring], Nesting::Auto);
+        assert!(r.problems.is_empty(), "{:?}", r.problems);
+    }
+
+    #[test]
+    fn a_hole_outside_its_outer_ring_on_a_shared_vertex_is_invalid() {
+        // Two squares touching at a corner, the second declared a hole of the first.
+        let r = region(
+            &[square(0.0, 0.0, 1.0), square(1.0, 1.0, 1.0)],
+            Nesting::FirstIsOuter,
+        );
+        assert!(!r.problems.is_empty());
     }
 
     #[test]

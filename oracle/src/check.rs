@@ -12,7 +12,7 @@
 //! | `orientation`     | every triangle has positive area, counter-clockwise with y up       |
 //! | `edges`           | each directed edge is used once; one without its reverse lies on the boundary, polygon on its left |
 //! | `boundary`        | every boundary edge (cut at vertices on it) is covered by exactly one triangle edge |
-//! | `crossings`       | no triangle edge crosses a ring edge                                |
+//! | `crossings`       | no triangle edge crosses a ring edge (zero-width ones, walked both ways or of zero-area rings, bound nothing and may be crossed) |
 //! | `count`           | the count any triangulation over the vertices used has (`n − 2 + 2h` per polygon) |
 //! | `area`            | Σ triangle areas = the polygon's area, exactly                      |
 //! | `containment`     | every triangle's centroid has winding number 1, exactly             |

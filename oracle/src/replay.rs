@@ -59,20 +59,11 @@ pub const KNOWN_GAPS: [KnownGap; 1] = [KnownGap {
 /// still records what happens), and a replay fails once such a case passes — delete its
 /// entry then, so the case guards the fix.
 ///
-/// Both came from `polytri precision` (issue 6): f32 rounding collapsed a generated polygon
-/// into a valid but degenerate one that strict mode neither refuses nor triangulates.
-pub const KNOWN_FAILURES: [KnownFailure; 2] = [
-    KnownFailure {
-        case: "cases/ring_doubles_back_along_its_own_edge",
-        strategies: &["fast", "quality"],
-        issue: "issue 6",
-    },
-    KnownFailure {
-        case: "cases/zero_area_hole_of_collinear_points",
-        strategies: &["fast", "quality"],
-        issue: "issue 6",
-    },
-];
+/// Empty since the oracle's contract says zero-width boundary parts (walls and spikes
+/// walked both ways, zero-area rings) enclose nothing and may be crossed: the two cases
+/// `polytri precision` had found (`cases/ring_doubles_back_along_its_own_edge`,
+/// `cases/zero_area_hole_of_collinear_points`) pass since.
+pub const KNOWN_FAILURES: [KnownFailure; 0] = [];
 
 /// A case polytri still gets wrong; see [`KNOWN_FAILURES`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -283,3 +283,26 @@ fn checks_a_large_page_quickly() {
     assert!(verdict.valid, "{:?}", verdict.failures());
     assert!(geo.valid, "{:?}", geo.failures());
 }
+
+/// A spike walked out and back (zero width, the same winding on both sides) bounds nothing:
+/// a triangulation may cross it, but must still cover the square exactly.
+#[test]
+fn zero_width_spikes_may_be_crossed() {
+    let ring = vec![
+        [0.0, 0.0],
+        [4.0, 0.0],
+        [4.0, 4.0],
+        [2.0, 4.0],
+        [2.0, 1.0],
+        [2.0, 4.0],
+        [0.0, 4.0],
+    ];
+    let input = Input::from_rings(&[ring], Nesting::Auto);
+    // Two triangles over the corners, the diagonal 1–6 crossing the spike 3–4.
+    let verdict = check(&input, &[[0, 1, 6], [1, 2, 6]]);
+    assert!(verdict.input_valid, "{:?}", verdict.failures());
+    assert!(verdict.valid, "{:?}", verdict.failures());
+    // Still a triangulation of the square: half of it is not.
+    let verdict = check(&input, &[[0, 1, 6]]);
+    assert!(!verdict.valid);
+}

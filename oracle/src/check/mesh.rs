@@ -152,7 +152,8 @@ impl<'a> Mesh<'a> {
         fails.check("boundary")
     }
 
-    /// No triangle edge crosses a ring edge.
+    /// No triangle edge crosses a ring edge that bounds the region (zero-width edges, with
+    /// the same winding on both sides, enclose nothing and may be crossed).
     pub(crate) fn crossings(&self) -> Check {
         let mut fails = Failures::default();
         let region = self.region;
@@ -165,6 +166,10 @@ impl<'a> Mesh<'a> {
             let (a, b) = (region.pts[u as usize], region.pts[v as usize]);
             region.segments_near(a, b, &mut stamps, |i| {
                 let e = region.edges[i];
+                // A zero-width edge bounds nothing: crossing it splits no region.
+                if region.zero_width[i] {
+                    return;
+                }
                 if cross_properly(a, b, region.pts[e.a as usize], region.pts[e.b as usize]) {
                     fails.note(|| {
                         format!(

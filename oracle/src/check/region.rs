@@ -92,6 +92,10 @@ pub(crate) struct Region {
     /// `(min rep, max rep)`, with the net jump of `w` across them in that direction
     /// (`w` left of `min → max` minus `w` right of it).
     pub pieces: HashMap<(u32, u32), i32>,
+    /// Per edge of [`Region::edges`]: every piece of it has net jump 0 — a wall or spike
+    /// walked both ways, or an edge of a zero-area ring. Such an edge bounds nothing
+    /// (`w` is the same on both sides), so a triangulation may cross it.
+    pub zero_width: Vec<bool>,
     /// Per representative: the region's angle there in radians (`NaN` for positions on no
     /// boundary piece; `2π` stands for "same value all around", see [`Region::angle_sum`]).
     pub theta: Vec<f64>,
@@ -116,6 +120,7 @@ impl Region {
             roles: Vec::new(),
             edges: Vec::new(),
             pieces: HashMap::new(),
+            zero_width: Vec::new(),
             theta: Vec::new(),
             area2: Exact::default(),
             points: None,
@@ -430,7 +435,7 @@ impl Region {
     /// for rings the probe lies on. Rings left out have winding 0 there.
     fn windings_by_ring(&self, probe: &Probe, stamps: &mut Stamps) -> HashMap<u32, Option<i64>> {
         let mut out: HashMap<u32, Option<i64>> = HashMap::new();
-        self.for_each_step(probe, stamps, |e, step| {
+        self.for_each_step(probe, stamps, |_, e, step| {
             let slot = out.entry(e.ring).or_insert(Some(0));
             *slot = match (*slot, step) {
                 (Some(w), Some(s)) => Some(w + s),
@@ -447,7 +452,7 @@ impl Region {
         &self,
         probe: &Probe,
         stamps: &mut Stamps,
-        mut f: impl FnMut(RingEdge, Option<i64>),
+        mut f: impl FnMut(usize, RingEdge, Option<i64>),
     ) {
         let Some(index) = &self.segments else { return };
         let p = probe.approx();
@@ -481,20 +486,46 @@ impl Region {
             {
                 return;
             }
-            f(e, winding_step(a, b, &turned));
+            f(i, e, winding_step(a, b, &turned));
         });
     }
 
-    /// The region's winding function at `probe`, `None` on a ring edge.
+    /// The region's winding function at `probe`, `None` on a ring edge that bounds the
+    /// region (on a zero-width edge `w` is the same as on either side of it).
     pub(crate) fn winding(&self, probe: &Probe, stamps: &mut Stamps) -> Option<i64> {
         let mut w = Some(0);
-        self.for_each_step(probe, stamps, |e, step| {
+        self.for_each_step(probe, stamps, |i, e, step| {
+            if step.is_none() && self.on_zero_width_piece(i, probe) {
+                return;
+            }
             w = match (w, step) {
                 (Some(w), Some(s)) => Some(w + s * i64::from(self.factor[e.ring as usize])),
                 _ => None,
             };
         });
         w
+    }
+
+    /// Whether `probe`, lying on edge `i`, lies on a piece of it with net jump 0.
+    fn on_zero_width_piece(&self, i: usize, probe: &Probe) -> bool {
+        if self.zero_width.get(i) == Some(&true) {
+            return true;
+        }
+        let e = self.edges[i];
+        let (a, b) = (self.rep[e.a as usize], self.rep[e.b as usize]);
+        let mut inside = Vec::new();
+        self.split(a, b, &mut inside);
+        let mut from = a;
+        for &to in inside.iter().chain(std::iter::once(&b)) {
+            let (p, q) = (self.pts[from as usize], self.pts[to as usize]);
+            if probe.on_segment(p, q) {
+                // On a shared endpoint of two pieces: a vertex, where the boundary is.
+                let at_end = probe.exact_point().is_some_and(|x| x == p || x == q);
+                return !at_end && self.pieces.get(&(from.min(to), from.max(to))) == Some(&0);
+            }
+            from = to;
+        }
+        false
     }
 
     /// Scratch for [`Region::winding`] and [`Region::segments_near`].
@@ -575,6 +606,19 @@ impl Region {
             i = j;
         }
         self.check_absolute_winding(&stars, &stars_of);
+        self.zero_width = Vec::with_capacity(self.edges.len());
+        for k in 0..self.edges.len() {
+            let e = self.edges[k];
+            let (a, b) = (self.rep[e.a as usize], self.rep[e.b as usize]);
+            self.split(a, b, &mut inside);
+            let mut from = a;
+            let mut zero = true;
+            for &to in inside.iter().chain(std::iter::once(&b)) {
+                zero &= self.pieces.get(&(from.min(to), from.max(to))) == Some(&0);
+                from = to;
+            }
+            self.zero_width.push(zero);
+        }
     }
 
     /// Condition 4 at one position, and the region's angle there; records the position's
@@ -710,7 +754,7 @@ impl Region {
             self.for_each_step(
                 &Probe::point(self.pts[p as usize]),
                 &mut stamps,
-                |e, step| {
+                |_, e, step| {
                     if component.get(&self.rep[e.a as usize]) != Some(&(c as u32)) {
                         w += step.unwrap_or(0) * i64::from(self.factor[e.ring as usize]);
                     }

@@ -30,6 +30,11 @@ use crate::report::RepairKind;
 use crate::triangulator::Context;
 use crate::{Error, Strategy};
 
+/// The fuzzing issue's experiment, never enabled otherwise: with the `planted-bug` feature
+/// the ear test misses reflex vertices on the right edge of the ear's bounding box (an
+/// off-by-one, `<` for `<=`), and the fuzz targets must find it (see the README).
+const PLANTED_BUG: bool = cfg!(feature = "planted-bug");
+
 /// Polygons with fewer reflex vertices than this scan them all in an ear test; more, and
 /// building the grid pays (earcut's threshold is 80 vertices in all).
 const GRID_MIN_REFLEX: usize = 32;
@@ -348,7 +353,7 @@ impl<'a> Clipper<'a> {
             !node.removed
                 && node.reflex
                 && q.x >= lo.x
-                && q.x <= hi.x
+                && (q.x <= hi.x && !(PLANTED_BUG && q.x == hi.x))
                 && q.y >= lo.y
                 && q.y <= hi.y
                 && test(r)

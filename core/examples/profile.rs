@@ -8,7 +8,9 @@ type Rings = Vec<Vec<[f64; 2]>>;
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
-    let path = args.get(1).expect("usage: profile FILE [RUNS] [fast|lenient|quality]");
+    let path = args
+        .get(1)
+        .expect("usage: profile FILE [RUNS] [fast|lenient|quality]");
     let runs: usize = args.get(2).map_or(100, |r| r.parse().expect("RUNS"));
     let mode = args.get(3).map_or("lenient", String::as_str);
     let text = std::fs::read_to_string(path).expect("readable file");

@@ -313,10 +313,16 @@ impl Cells {
         self.extra.push(n);
     }
 
-    /// Calls `found` on every node in the box `lo..=hi` (and on every `extra` one, stale or
-    /// not, wherever it lies) until it returns true; returns whether it did.
-    pub fn any_in_box(&self, lo: Point, hi: Point, mut found: impl FnMut(NodeId) -> bool) -> bool {
-        if self.entries.is_empty() && self.extra.is_empty() {
+    /// Calls `found` with every node listed in the box `lo..=hi` and its position until it
+    /// returns true; returns whether it did. Nodes added after building are not included
+    /// (see [`Cells::extra`]).
+    pub fn any_in_box(
+        &self,
+        lo: Point,
+        hi: Point,
+        mut found: impl FnMut(NodeId, Point) -> bool,
+    ) -> bool {
+        if self.entries.is_empty() {
             return false;
         }
         // NaN (removed) positions fail every comparison
@@ -327,12 +333,17 @@ impl Cells {
             let e = self.start[row * self.nx + c1 + 1] as usize;
             if self.entries[s..e]
                 .iter()
-                .any(|&(n, q)| inside(q) && found(n))
+                .any(|&(n, q)| inside(q) && found(n, q))
             {
                 return true;
             }
         }
-        self.extra.iter().any(|&n| found(n))
+        false
+    }
+
+    /// Nodes added after building, wherever they lie; entries may be stale.
+    pub fn extra(&self) -> &[NodeId] {
+        &self.extra
     }
 }
 
@@ -402,10 +413,11 @@ mod tests {
         cells.build(&nodes, |n| pts[n.idx()], 5);
         let found = |cells: &Cells, lo: Point, hi: Point| {
             let mut v = Vec::new();
-            cells.any_in_box(lo, hi, |n| {
+            cells.any_in_box(lo, hi, |n, _| {
                 v.push(n);
                 false
             });
+            v.extend_from_slice(cells.extra());
             v
         };
         assert!(found(&cells, p(0.5, 0.5), p(1.5, 1.5)).contains(&NodeId(1)));

@@ -164,7 +164,7 @@ impl EdgeGrid {
 
 /// Columns and rows for about `cells` cells over a `w` × `h` box, shaped like it; at
 /// least one of each, also when the box is flat or its size overflows.
-fn shape(cells: usize, w: f64, h: f64) -> (usize, usize) {
+pub(crate) fn shape(cells: usize, w: f64, h: f64) -> (usize, usize) {
     let (wide, tall) = (w > 0.0, h > 0.0);
     let ratio = w / h;
     let nx = match (wide, tall) {
@@ -182,7 +182,7 @@ fn shape(cells: usize, w: f64, h: f64) -> (usize, usize) {
 }
 
 /// Cells per unit length for `cells` cells over `extent` (0 when that is not finite).
-fn scale(cells: usize, extent: f64) -> f64 {
+pub(crate) fn scale(cells: usize, extent: f64) -> f64 {
     let s = cells as f64 / extent;
     if s.is_finite() && extent > 0.0 {
         s

@@ -2,12 +2,14 @@
 //! adjacent edges at their shared vertex. Then the sweep of `validate` would find no
 //! crossing and no T-junction, and no two nodes share a position, so `clean` skips it.
 //!
-//! Sweep and prune: the edges' bounding boxes sorted by their left sides, each box compared
-//! with the boxes that start before it ends. Box comparisons only narrow the candidates
-//! down; every pair whose boxes overlap is decided by exact `orient2d` signs. The scan has a
-//! budget linear in the edges: when many long edges lie over each other it gives up, says
+//! A few edges are sorted by the left sides of their bounding boxes, each compared with the
+//! boxes that start before it ends (sweep and prune); more go into a uniform grid, and
+//! edges sharing a cell are compared. Box comparisons only narrow the candidates down;
+//! every pair whose boxes overlap is decided by exact `orient2d` signs. Both scans have a
+//! budget linear in the edges: when many long edges lie over each other they give up, say
 //! "not proved", and the full sweep runs as before. Either way the result is the sweep's.
 
+use crate::grid::{scale, shape};
 use crate::pool::{NodeId, Pool};
 use crate::predicates::{orient2d, within_box, Orientation, Point};
 
@@ -29,22 +31,13 @@ struct EdgeBox {
 #[derive(Debug, Default)]
 pub(crate) struct PruneScratch {
     boxes: Vec<EdgeBox>,
-    sorted: Vec<EdgeBox>,
-    keys: Vec<(u64, u32)>,
+    /// Grid scan: where each cell's entries start, and the entries (edge indices).
+    start: Vec<u32>,
+    entries: Vec<u32>,
 }
 
-/// Up to this many edges, sorting the boxes themselves is cheapest.
-const SMALL: usize = 20;
-
-/// An unsigned integer ordered as `total_cmp` orders finite x.
-fn order_key(x: f64) -> u64 {
-    let bits = x.to_bits();
-    if bits >> 63 == 1 {
-        !bits
-    } else {
-        bits | 1 << 63
-    }
-}
+/// Up to this many edges, sorting the boxes is cheaper than a grid.
+const SMALL: usize = 512;
 
 /// Whether the edges of the rings through `starts` are proved apart: no two meet, except
 /// adjacent ones at their shared vertex and nowhere else. `false` means "not proved" (some
@@ -82,27 +75,18 @@ pub(crate) fn edges_apart(
             }
         }
     }
-    // Coordinates are finite here (load dropped or refused the others) and −0.0 was made
-    // +0.0, so the bits of a non-negative x order like x. Insertion sort for a glyph's
-    // few edges; otherwise sort small keys, then move the boxes once.
     if boxes.len() <= SMALL {
-        boxes.sort_by(|s, t| s.x0.total_cmp(&t.x0));
+        scan_sorted(pool, boxes)
     } else {
-        let keys = &mut scratch.keys;
-        keys.clear();
-        keys.extend(
-            boxes
-                .iter()
-                .enumerate()
-                .map(|(i, b)| (order_key(b.x0), i as u32)),
-        );
-        keys.sort_unstable();
-        let sorted = &mut scratch.sorted;
-        sorted.clear();
-        sorted.extend(keys.iter().map(|&(_, i)| boxes[i as usize]));
-        core::mem::swap(boxes, sorted);
+        scan_grid(pool, scratch)
     }
-    let boxes = &scratch.boxes;
+}
+
+/// A few edges: sort the boxes by their left sides and compare each with the boxes that
+/// start before it ends.
+fn scan_sorted(pool: &Pool, boxes: &mut [EdgeBox]) -> bool {
+    // coordinates are finite here (load dropped or refused the others)
+    boxes.sort_unstable_by(|s, t| s.x0.total_cmp(&t.x0));
     let mut budget = BUDGET_PER_EDGE * boxes.len() + 64;
     for (i, e) in boxes.iter().enumerate() {
         for f in &boxes[i + 1..] {
@@ -113,11 +97,81 @@ pub(crate) fn edges_apart(
                 return false;
             }
             budget -= 1;
-            if f.y0 > e.y1 || e.y0 > f.y1 {
-                continue;
-            }
-            if meet(pool, e, f) {
+            if f.y0 <= e.y1 && e.y0 <= f.y1 && meet(pool, e, f) {
                 return false;
+            }
+        }
+    }
+    true
+}
+
+/// Many edges: list each in the cells of a uniform grid its box covers (about two edges
+/// per cell) and compare the edges sharing a cell. Two edges whose boxes overlap share
+/// the cell of a point of the overlap, since cells are monotone in x and y.
+fn scan_grid(pool: &Pool, scratch: &mut PruneScratch) -> bool {
+    let PruneScratch {
+        boxes,
+        start,
+        entries,
+    } = scratch;
+    let (mut x0, mut y0, mut x1, mut y1) = (f64::MAX, f64::MAX, f64::MIN, f64::MIN);
+    for b in boxes.iter() {
+        (x0, y0, x1, y1) = (x0.min(b.x0), y0.min(b.y0), x1.max(b.x1), y1.max(b.y1));
+    }
+    let (w, h) = (x1 - x0, y1 - y0);
+    let (nx, ny) = shape((boxes.len() / 2).max(1), w, h);
+    let (sx, sy) = (scale(nx, w), scale(ny, h));
+    // `as` saturates: NaN and negative become 0
+    let column = |x: f64| (((x - x0) * sx) as usize).min(nx - 1);
+    let row = |y: f64| (((y - y0) * sy) as usize).min(ny - 1);
+    let cells_of = |b: &EdgeBox| (column(b.x0), column(b.x1), row(b.y0), row(b.y1));
+    // counting sort of (cell, edge) entries; give up when long edges would list too many
+    let mut budget = BUDGET_PER_EDGE * boxes.len() + 64;
+    start.clear();
+    start.resize(nx * ny + 2, 0);
+    for b in boxes.iter() {
+        let (c0, c1, r0, r1) = cells_of(b);
+        let listed = (c1 - c0 + 1) * (r1 - r0 + 1);
+        if listed > budget {
+            return false;
+        }
+        budget -= listed;
+        for r in r0..=r1 {
+            for c in c0..=c1 {
+                start[r * nx + c + 2] += 1;
+            }
+        }
+    }
+    for c in 2..start.len() {
+        start[c] += start[c - 1];
+    }
+    entries.clear();
+    entries.resize(start[nx * ny + 1] as usize, 0);
+    for (i, b) in boxes.iter().enumerate() {
+        let (c0, c1, r0, r1) = cells_of(b);
+        for r in r0..=r1 {
+            for c in c0..=c1 {
+                let at = &mut start[r * nx + c + 1];
+                entries[*at as usize] = i as u32;
+                *at += 1;
+            }
+        }
+    }
+    // cell c now holds entries[start[c]..start[c + 1]]
+    for c in 0..nx * ny {
+        let cell = &entries[start[c] as usize..start[c + 1] as usize];
+        for (k, &i) in cell.iter().enumerate() {
+            let e = &boxes[i as usize];
+            for &j in &cell[k + 1..] {
+                if budget == 0 {
+                    return false;
+                }
+                budget -= 1;
+                let f = &boxes[j as usize];
+                let overlap = f.x0 <= e.x1 && e.x0 <= f.x1 && f.y0 <= e.y1 && e.y0 <= f.y1;
+                if overlap && meet(pool, e, f) {
+                    return false;
+                }
             }
         }
     }
@@ -208,17 +262,7 @@ mod tests {
     }
 
     #[test]
-    fn order_keys_order_like_total_cmp() {
-        let xs = [-1e300, -1.5, -5e-324, 0.0, 5e-324, 1.0, 1e300];
-        for &a in &xs {
-            for &b in &xs {
-                assert_eq!(order_key(a).cmp(&order_key(b)), a.total_cmp(&b), "{a} {b}");
-            }
-        }
-    }
-
-    #[test]
-    fn many_edges_take_the_keyed_sort() {
+    fn many_edges_take_the_grid() {
         // a 64-gon with a 64-gon hole, and the same hole moved onto the outer ring
         let circle = |r: f64, dx: f64| -> Vec<(f64, f64)> {
             (0..64)

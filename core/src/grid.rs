@@ -164,7 +164,7 @@ impl EdgeGrid {
 
 /// Columns and rows for about `cells` cells over a `w` × `h` box, shaped like it; at
 /// least one of each, also when the box is flat or its size overflows.
-fn shape(cells: usize, w: f64, h: f64) -> (usize, usize) {
+pub(crate) fn shape(cells: usize, w: f64, h: f64) -> (usize, usize) {
     let (wide, tall) = (w > 0.0, h > 0.0);
     let ratio = w / h;
     let nx = match (wide, tall) {
@@ -182,7 +182,7 @@ fn shape(cells: usize, w: f64, h: f64) -> (usize, usize) {
 }
 
 /// Cells per unit length for `cells` cells over `extent` (0 when that is not finite).
-fn scale(cells: usize, extent: f64) -> f64 {
+pub(crate) fn scale(cells: usize, extent: f64) -> f64 {
     let s = cells as f64 / extent;
     if s.is_finite() && extent > 0.0 {
         s
@@ -313,10 +313,16 @@ impl Cells {
         self.extra.push(n);
     }
 
-    /// Calls `found` on every node in the box `lo..=hi` (and on every `extra` one, stale or
-    /// not, wherever it lies) until it returns true; returns whether it did.
-    pub fn any_in_box(&self, lo: Point, hi: Point, mut found: impl FnMut(NodeId) -> bool) -> bool {
-        if self.entries.is_empty() && self.extra.is_empty() {
+    /// Calls `found` with every node listed in the box `lo..=hi` and its position until it
+    /// returns true; returns whether it did. Nodes added after building are not included
+    /// (see [`Cells::extra`]).
+    pub fn any_in_box(
+        &self,
+        lo: Point,
+        hi: Point,
+        mut found: impl FnMut(NodeId, Point) -> bool,
+    ) -> bool {
+        if self.entries.is_empty() {
             return false;
         }
         // NaN (removed) positions fail every comparison
@@ -327,12 +333,17 @@ impl Cells {
             let e = self.start[row * self.nx + c1 + 1] as usize;
             if self.entries[s..e]
                 .iter()
-                .any(|&(n, q)| inside(q) && found(n))
+                .any(|&(n, q)| inside(q) && found(n, q))
             {
                 return true;
             }
         }
-        self.extra.iter().any(|&n| found(n))
+        false
+    }
+
+    /// Nodes added after building, wherever they lie; entries may be stale.
+    pub fn extra(&self) -> &[NodeId] {
+        &self.extra
     }
 }
 
@@ -402,10 +413,11 @@ mod tests {
         cells.build(&nodes, |n| pts[n.idx()], 5);
         let found = |cells: &Cells, lo: Point, hi: Point| {
             let mut v = Vec::new();
-            cells.any_in_box(lo, hi, |n| {
+            cells.any_in_box(lo, hi, |n, _| {
                 v.push(n);
                 false
             });
+            v.extend_from_slice(cells.extra());
             v
         };
         assert!(found(&cells, p(0.5, 0.5), p(1.5, 1.5)).contains(&NodeId(1)));

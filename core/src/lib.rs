@@ -40,6 +40,7 @@ mod nest;
 mod options;
 mod pool;
 mod predicates;
+mod prune;
 mod report;
 mod touch;
 mod triangulator;

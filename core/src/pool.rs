@@ -98,11 +98,19 @@ impl Pool {
 
     /// Links the nodes `first..first+count` (in pool order) into one circular list.
     pub fn link_run(&mut self, first: u32, count: u32) {
-        for k in 0..count {
-            let n = &mut self.nodes[(first + k) as usize];
-            n.next = NodeId(first + (k + 1) % count);
-            n.prev = NodeId(first + (k + count - 1) % count);
+        if count == 0 {
+            return;
         }
+        let last = first + count - 1;
+        let run = &mut self.nodes[first as usize..=last as usize];
+        // no division per node: the ends are fixed up afterwards
+        for (k, n) in (first..).zip(run.iter_mut()) {
+            n.prev = NodeId(k.wrapping_sub(1));
+            n.next = NodeId(k.wrapping_add(1));
+        }
+        // close the circle
+        self.nodes[first as usize].prev = NodeId(last);
+        self.nodes[last as usize].next = NodeId(first);
     }
 
     /// Unlinks `n` from its ring; its neighbours become adjacent and may be ears again.

@@ -83,6 +83,7 @@ pub(crate) struct Context {
     pub relink: Vec<(NodeId, NodeId)>,
     pub crossings: Vec<validate::Crossing>,
     pub sweep: SweepScratch,
+    pub prune: crate::prune::PruneScratch,
     pub edge_grid: EdgeGrid,
     /// Lenient mode with crossings: the input's area (outer rings minus holes, by the
     /// shoelace formula as earcut measures it) and snapshots for a second clipping try.

@@ -1,0 +1,59 @@
+//! Runs polytri on one rings or shapes JSON file many times, for a profiler:
+//! `cargo run --release -p polytri --example profile -- FILE [RUNS] [fast|lenient|quality]`.
+//! Shapes go one polygon at a time (first ring outer), as `polytri bench` gives them.
+
+use polytri::{Nesting, Options, Strategy, Triangulator};
+
+type Rings = Vec<Vec<[f64; 2]>>;
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let path = args
+        .get(1)
+        .expect("usage: profile FILE [RUNS] [fast|lenient|quality]");
+    let runs: usize = args.get(2).map_or(100, |r| r.parse().expect("RUNS"));
+    let mode = args.get(3).map_or("lenient", String::as_str);
+    let text = std::fs::read_to_string(path).expect("readable file");
+    let value: serde_json::Value = serde_json::from_str(&text).expect("JSON");
+    let shapes: Vec<Rings> = if value[0][0][0].is_array() {
+        serde_json::from_value(value).expect("shapes JSON")
+    } else {
+        vec![serde_json::from_value(value).expect("rings JSON")]
+    };
+    let flat: Vec<(Vec<[f64; 2]>, Vec<usize>)> = shapes
+        .iter()
+        .map(|rings| {
+            let mut starts = Vec::new();
+            let mut vertices = Vec::new();
+            for ring in rings {
+                starts.push(vertices.len());
+                vertices.extend_from_slice(ring);
+            }
+            (vertices, starts)
+        })
+        .collect();
+    let options = Options::new().with_nesting(Nesting::FirstIsOuter);
+    let options = match mode {
+        "fast" => options,
+        "lenient" => options.with_lenient(true),
+        "quality" => options.with_strategy(Strategy::Quality),
+        other => panic!("unknown mode {other}"),
+    };
+    let mut tri = Triangulator::<f64>::new();
+    let mut out = Vec::new();
+    let mut triangles = 0;
+    let began = std::time::Instant::now();
+    for _ in 0..runs {
+        for (vertices, starts) in &flat {
+            triangles += tri
+                .triangulate(vertices, starts, &options, &mut out)
+                .map_or(0, |r| r.triangles);
+        }
+    }
+    let per_run = began.elapsed().as_secs_f64() / runs as f64;
+    println!(
+        "{path}: {} triangles per run, {:.4} ms per run",
+        triangles / runs.max(1),
+        per_run * 1e3
+    );
+}

@@ -1,0 +1,286 @@
+//! A quick proof for the common case of `clean`'s input check: no two edges meet, except
+//! adjacent edges at their shared vertex. Then the sweep of `validate` would find no
+//! crossing and no T-junction, and no two nodes share a position, so `clean` skips it.
+//!
+//! A few edges are sorted by the left sides of their bounding boxes, each compared with the
+//! boxes that start before it ends (sweep and prune); more go into a uniform grid, and
+//! edges sharing a cell are compared. Box comparisons only narrow the candidates down;
+//! every pair whose boxes overlap is decided by exact `orient2d` signs. Both scans have a
+//! budget linear in the edges: when many long edges lie over each other they give up, say
+//! "not proved", and the full sweep runs as before. Either way the result is the sweep's.
+
+use crate::grid::{scale, shape};
+use crate::pool::{NodeId, Pool};
+use crate::predicates::{orient2d, within_box, Orientation, Point};
+
+/// Box comparisons allowed per edge (plus a constant) before the proof gives up.
+const BUDGET_PER_EDGE: usize = 16;
+
+/// One edge `from → to` with its bounding box.
+#[derive(Clone, Copy, Debug)]
+struct EdgeBox {
+    x0: f64,
+    x1: f64,
+    y0: f64,
+    y1: f64,
+    from: NodeId,
+    to: NodeId,
+}
+
+/// Reusable buffers of [`edges_apart`].
+#[derive(Debug, Default)]
+pub(crate) struct PruneScratch {
+    boxes: Vec<EdgeBox>,
+    /// Grid scan: where each cell's entries start, and the entries (edge indices).
+    start: Vec<u32>,
+    entries: Vec<u32>,
+}
+
+/// Up to this many edges, sorting the boxes is cheaper than a grid.
+const SMALL: usize = 512;
+
+/// Whether the edges of the rings through `starts` are proved apart: no two meet, except
+/// adjacent ones at their shared vertex and nowhere else. `false` means "not proved" (some
+/// pair meets, or the budget ran out). `nodes` is filled with the rings' nodes either way.
+pub(crate) fn edges_apart(
+    pool: &Pool,
+    starts: &[NodeId],
+    scratch: &mut PruneScratch,
+    nodes: &mut Vec<NodeId>,
+) -> bool {
+    let boxes = &mut scratch.boxes;
+    boxes.clear();
+    nodes.clear();
+    for &start in starts {
+        if start.idx() >= pool.len() {
+            continue;
+        }
+        let mut n = start;
+        // bounded like the sweep's walk, in case a start was unlinked
+        for _ in 0..pool.len() {
+            let next = pool.next(n);
+            let (a, b) = (pool.p(n), pool.p(next));
+            nodes.push(n);
+            boxes.push(EdgeBox {
+                x0: a.x.min(b.x),
+                x1: a.x.max(b.x),
+                y0: a.y.min(b.y),
+                y1: a.y.max(b.y),
+                from: n,
+                to: next,
+            });
+            n = next;
+            if n == start {
+                break;
+            }
+        }
+    }
+    if boxes.len() <= SMALL {
+        scan_sorted(pool, boxes)
+    } else {
+        scan_grid(pool, scratch)
+    }
+}
+
+/// A few edges: sort the boxes by their left sides and compare each with the boxes that
+/// start before it ends.
+fn scan_sorted(pool: &Pool, boxes: &mut [EdgeBox]) -> bool {
+    // coordinates are finite here (load dropped or refused the others)
+    boxes.sort_unstable_by(|s, t| s.x0.total_cmp(&t.x0));
+    let mut budget = BUDGET_PER_EDGE * boxes.len() + 64;
+    for (i, e) in boxes.iter().enumerate() {
+        for f in &boxes[i + 1..] {
+            if f.x0 > e.x1 {
+                break;
+            }
+            if budget == 0 {
+                return false;
+            }
+            budget -= 1;
+            if f.y0 <= e.y1 && e.y0 <= f.y1 && meet(pool, e, f) {
+                return false;
+            }
+        }
+    }
+    true
+}
+
+/// Many edges: list each in the cells of a uniform grid its box covers (about two edges
+/// per cell) and compare the edges sharing a cell. Two edges whose boxes overlap share
+/// the cell of a point of the overlap, since cells are monotone in x and y.
+fn scan_grid(pool: &Pool, scratch: &mut PruneScratch) -> bool {
+    let PruneScratch {
+        boxes,
+        start,
+        entries,
+    } = scratch;
+    let (mut x0, mut y0, mut x1, mut y1) = (f64::MAX, f64::MAX, f64::MIN, f64::MIN);
+    for b in boxes.iter() {
+        (x0, y0, x1, y1) = (x0.min(b.x0), y0.min(b.y0), x1.max(b.x1), y1.max(b.y1));
+    }
+    let (w, h) = (x1 - x0, y1 - y0);
+    let (nx, ny) = shape((boxes.len() / 2).max(1), w, h);
+    let (sx, sy) = (scale(nx, w), scale(ny, h));
+    // `as` saturates: NaN and negative become 0
+    let column = |x: f64| (((x - x0) * sx) as usize).min(nx - 1);
+    let row = |y: f64| (((y - y0) * sy) as usize).min(ny - 1);
+    let cells_of = |b: &EdgeBox| (column(b.x0), column(b.x1), row(b.y0), row(b.y1));
+    // counting sort of (cell, edge) entries; give up when long edges would list too many
+    let mut budget = BUDGET_PER_EDGE * boxes.len() + 64;
+    start.clear();
+    start.resize(nx * ny + 2, 0);
+    for b in boxes.iter() {
+        let (c0, c1, r0, r1) = cells_of(b);
+        let listed = (c1 - c0 + 1) * (r1 - r0 + 1);
+        if listed > budget {
+            return false;
+        }
+        budget -= listed;
+        for r in r0..=r1 {
+            for c in c0..=c1 {
+                start[r * nx + c + 2] += 1;
+            }
+        }
+    }
+    for c in 2..start.len() {
+        start[c] += start[c - 1];
+    }
+    entries.clear();
+    entries.resize(start[nx * ny + 1] as usize, 0);
+    for (i, b) in boxes.iter().enumerate() {
+        let (c0, c1, r0, r1) = cells_of(b);
+        for r in r0..=r1 {
+            for c in c0..=c1 {
+                let at = &mut start[r * nx + c + 1];
+                entries[*at as usize] = i as u32;
+                *at += 1;
+            }
+        }
+    }
+    // cell c now holds entries[start[c]..start[c + 1]]
+    for c in 0..nx * ny {
+        let cell = &entries[start[c] as usize..start[c + 1] as usize];
+        for (k, &i) in cell.iter().enumerate() {
+            let e = &boxes[i as usize];
+            for &j in &cell[k + 1..] {
+                if budget == 0 {
+                    return false;
+                }
+                budget -= 1;
+                let f = &boxes[j as usize];
+                let overlap = f.x0 <= e.x1 && e.x0 <= f.x1 && f.y0 <= e.y1 && e.y0 <= f.y1;
+                if overlap && meet(pool, e, f) {
+                    return false;
+                }
+            }
+        }
+    }
+    true
+}
+
+/// Whether edges `e` and `f`, whose boxes overlap, meet other than adjacent edges at their
+/// shared vertex only (exact).
+fn meet(pool: &Pool, e: &EdgeBox, f: &EdgeBox) -> bool {
+    let (a, b, c, d) = (pool.p(e.from), pool.p(e.to), pool.p(f.from), pool.p(f.to));
+    if e.to == f.from && f.to == e.from {
+        return true; // a ring of two: the edges lie on each other
+    }
+    if e.to == f.from {
+        // a → b → d: they share b and nothing else unless they are collinear
+        return orient2d(a, b, d) == Orientation::Collinear;
+    }
+    if f.to == e.from {
+        return orient2d(c, d, b) == Orientation::Collinear;
+    }
+    segments_meet(a, b, c, d)
+}
+
+/// Whether closed segments a–b and c–d have a point in common (exact).
+fn segments_meet(a: Point, b: Point, c: Point, d: Point) -> bool {
+    use Orientation::Collinear;
+    let (o1, o2) = (orient2d(a, b, c), orient2d(a, b, d));
+    let (o3, o4) = (orient2d(c, d, a), orient2d(c, d, b));
+    if o1 != Collinear && o1 == o2 || o3 != Collinear && o3 == o4 {
+        return false; // one segment lies strictly on one side of the other's line
+    }
+    if o1 != Collinear && o2 != Collinear && o3 != Collinear && o4 != Collinear {
+        return true; // a proper crossing
+    }
+    (o1 == Collinear && within_box(a, b, c))
+        || (o2 == Collinear && within_box(a, b, d))
+        || (o3 == Collinear && within_box(c, d, a))
+        || (o4 == Collinear && within_box(c, d, b))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Builds a pool from rings of (x, y) and returns it with one start node per ring.
+    fn build(rings: &[&[(f64, f64)]]) -> (Pool, Vec<NodeId>) {
+        let mut pool = Pool::default();
+        let mut starts = Vec::new();
+        for (r, ring) in rings.iter().enumerate() {
+            let first = pool.len() as u32;
+            for (i, &(x, y)) in ring.iter().enumerate() {
+                pool.push(Point::new(x, y), i as u32, r as u32);
+            }
+            pool.link_run(first, ring.len() as u32);
+            starts.push(NodeId(first));
+        }
+        (pool, starts)
+    }
+
+    fn apart(rings: &[&[(f64, f64)]]) -> bool {
+        let (pool, starts) = build(rings);
+        let mut nodes = Vec::new();
+        let ok = edges_apart(&pool, &starts, &mut PruneScratch::default(), &mut nodes);
+        assert_eq!(nodes.len(), rings.iter().map(|r| r.len()).sum::<usize>());
+        ok
+    }
+
+    const SQUARE: &[(f64, f64)] = &[(0., 0.), (10., 0.), (10., 10.), (0., 10.)];
+
+    #[test]
+    fn simple_rings_are_apart() {
+        assert!(apart(&[SQUARE]));
+        assert!(apart(&[SQUARE, &[(3., 3.), (3., 7.), (7., 7.), (7., 3.)]]));
+    }
+
+    #[test]
+    fn touching_crossing_and_shared_points_are_not() {
+        // a hole touching the outer ring inside an edge (a T-junction)
+        assert!(!apart(&[SQUARE, &[(0., 5.), (3., 7.), (3., 3.)]]));
+        // a hole sharing a vertex with the outer ring
+        assert!(!apart(&[SQUARE, &[(0., 0.), (3., 7.), (3., 3.)]]));
+        // a bow tie
+        assert!(!apart(&[&[(0., 0.), (10., 10.), (10., 0.), (0., 10.)]]));
+        // a spike: adjacent edges running back along each other
+        assert!(!apart(&[&[(0., 0.), (10., 0.), (5., 0.), (5., 5.)]]));
+        // two rings crossing
+        assert!(!apart(&[SQUARE, &[(5., 5.), (15., 5.), (15., 6.)]]));
+    }
+
+    #[test]
+    fn many_edges_take_the_grid() {
+        // a 64-gon with a 64-gon hole, and the same hole moved onto the outer ring
+        let circle = |r: f64, dx: f64| -> Vec<(f64, f64)> {
+            (0..64)
+                .map(|k| {
+                    let t = f64::from(k) * core::f64::consts::TAU / 64.0;
+                    (dx + r * t.cos(), r * t.sin())
+                })
+                .collect()
+        };
+        assert!(apart(&[&circle(10.0, 0.0), &circle(5.0, 0.0)]));
+        assert!(!apart(&[&circle(10.0, 0.0), &circle(5.0, 5.0)]));
+    }
+
+    #[test]
+    fn near_misses_are_decided_exactly() {
+        // the hole's corner sits one ulp right of the outer ring's left edge
+        let x = f64::from_bits(0.0f64.to_bits() + 1);
+        assert!(apart(&[SQUARE, &[(x, 5.), (3., 7.), (3., 3.)]]));
+        assert!(!apart(&[SQUARE, &[(0., 5.), (3., 7.), (3., 3.)]]));
+    }
+}

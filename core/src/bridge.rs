@@ -347,7 +347,7 @@ fn least_angle_in_triangle(
 /// The node at position `target` (merged, of `component`) whose corner contains the
 /// direction towards M: the occurrence M can connect to without crossing its edges.
 fn visible_node_at(cx: &Context, target: Point, pm: Point, component: u32) -> Option<NodeId> {
-    let mut fallback = None;
+    let (mut on_side, mut fallback) = (None, None);
     for x in cx.edge_grid.query(target, target) {
         let node = cx.pool.get(x);
         if node.removed || node.p != target || cx.rings[node.ring as usize].component != component {
@@ -357,17 +357,19 @@ fn visible_node_at(cx: &Context, target: Point, pm: Point, component: u32) -> Op
             continue;
         }
         let (xn, xp) = (cx.pool.p(node.next), cx.pool.p(node.prev));
-        if corner_contains(target, xn, xp, pm) == Some(true) {
-            return Some(x);
+        match corner_contains(target, xn, xp, pm) {
+            Some(true) => return Some(x),
+            // M straight along one of the corner's sides (collinear edges overlap there)
+            None => on_side = on_side.or(Some(x)),
+            Some(false) => fallback = fallback.or(Some(x)),
         }
-        fallback = fallback.or(Some(x));
     }
-    // No corner contains M strictly: M lies outside the boundary it sees, which only
-    // invalid input allows (a lobe winding the other way). Strict mode refuses it.
-    if cx.lenient {
-        fallback
-    } else {
-        None
+    // No corner contains M: M lies outside the boundary it sees, which only invalid
+    // input allows (a lobe winding the other way). Strict mode refuses it.
+    match on_side {
+        Some(x) => Some(x),
+        None if cx.lenient => fallback,
+        None => None,
     }
 }
 

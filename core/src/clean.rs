@@ -15,7 +15,7 @@
 //!    and make every ring counter-clockwise. No winding order is assumed from the caller.
 
 use crate::pool::NodeId;
-use crate::predicates::{cmp_xy, orient2d, within_box, Orientation};
+use crate::predicates::{cmp_xy, orient2d, within_box, Orientation, Point};
 use crate::prune;
 use crate::report::{DropReason, Dropped, RepairKind};
 use crate::triangulator::Context;
@@ -289,21 +289,64 @@ fn collect_shared(cx: &mut Context) {
 fn orient_ring(cx: &mut Context, r: usize) {
     let start = cx.rings[r].start;
     let mut best = start;
+    let mut visits = 0;
     for n in cx.pool.ring(start) {
         let (p, b) = (cx.pool.p(n), cx.pool.p(best));
         if p.x > b.x || (p.x == b.x && p.y < b.y) {
-            best = n;
+            (best, visits) = (n, 1);
+        } else if p == b {
+            visits += 1;
         }
     }
     cx.rings[r].rightmost = best;
-    // At the rightmost-lowest vertex the ring turns strictly (no repeats, no spikes, and a
-    // split node is never rightmost-lowest), so this turn gives the winding.
-    let turn = orient2d(
-        cx.pool.p(cx.pool.prev(best)),
-        cx.pool.p(best),
-        cx.pool.p(cx.pool.next(best)),
-    );
-    if turn == Orientation::Clockwise {
+    let pool = &cx.pool;
+    // Visited once, the rightmost-lowest vertex is a strict turn (no repeats, no spikes,
+    // and a split node is never rightmost-lowest), and that turn gives the winding. A ring
+    // touching itself there may turn at a visit whose edges belong to different lobes.
+    let counter_clockwise = if visits > 1 {
+        outermost_edge_arrives(cx, best)
+    } else {
+        None
+    };
+    let counter_clockwise = counter_clockwise.unwrap_or_else(|| {
+        let turn = orient2d(
+            pool.p(pool.prev(best)),
+            pool.p(best),
+            pool.p(pool.next(best)),
+        );
+        turn != Orientation::Clockwise
+    });
+    if !counter_clockwise {
         cx.pool.reverse(start);
+    }
+}
+
+/// At the rightmost-lowest position X of a ring visiting it several times: every edge at X
+/// points into the closed left half-plane, and the one turned furthest clockwise from +x
+/// (the lowest) bounds the outside. A counter-clockwise ring arrives along it, a clockwise
+/// one leaves. `None` when an arriving and a leaving edge share that direction.
+fn outermost_edge_arrives(cx: &Context, at: NodeId) -> Option<bool> {
+    let pool = &cx.pool;
+    let x = pool.p(at);
+    // (other end, arrives) of the lowest edge so far, and whether it is tied
+    let mut lowest: Option<(Point, bool)> = None;
+    let mut tied = false;
+    for n in pool.ring(at).filter(|&n| pool.p(n) == x) {
+        for (q, arrives) in [(pool.p(pool.prev(n)), true), (pool.p(pool.next(n)), false)] {
+            match lowest {
+                None => lowest = Some((q, arrives)),
+                // within a half-plane, counter-clockwise of the lowest means lower still
+                Some((e, a)) => match orient2d(x, e, q) {
+                    Orientation::CounterClockwise => (lowest, tied) = (Some((q, arrives)), false),
+                    Orientation::Collinear if a != arrives => tied = true,
+                    _ => {}
+                },
+            }
+        }
+    }
+    if tied {
+        None
+    } else {
+        lowest.map(|(_, arrives)| arrives)
     }
 }

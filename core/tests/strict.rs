@@ -551,3 +551,48 @@ fn lobes_winding_opposite_ways_along_a_wall_are_refused() {
         }
     }
 }
+
+/// Two triangles pinched at their shared rightmost vertex (3, 1), one ring. The turn at a
+/// visit of the rightmost vertex may pair an edge of one lobe with an edge of the other,
+/// so it cannot tell the winding; the lowest edge there can. Found by `polytri precision`
+/// (a spiral collapsed by f32 rounding), where one start vertex made the ring a "hole".
+#[test]
+fn ring_touching_itself_at_its_rightmost_vertex_keeps_both_lobes() {
+    let ring = [
+        [3.0, 1.0],
+        [2.0, 4.0],
+        [3.0, 3.0],
+        [3.0, 1.0],
+        [0.0, 0.0],
+        [1.0, 4.0],
+    ];
+    // twice the area of both lobes: 2 + 11
+    let twice_area = 13.0;
+    for reversed in [false, true] {
+        for start in 0..ring.len() {
+            let mut turned: Vec<[f64; 2]> = (0..ring.len())
+                .map(|k| ring[(start + k) % ring.len()])
+                .collect();
+            if reversed {
+                turned.reverse();
+            }
+            for strategy in [Strategy::Fast, Strategy::Quality] {
+                let mut out = Vec::new();
+                Triangulator::<f64>::new()
+                    .triangulate(&turned, &[0], &strict(strategy), &mut out)
+                    .unwrap_or_else(|e| panic!("start {start}, reversed {reversed}: {e}"));
+                let sum: f64 = out
+                    .iter()
+                    .map(|t| {
+                        let [a, b, c] = t.map(|i| turned[i as usize]);
+                        let twice = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+                        assert!(twice > 0.0, "start {start}: clockwise triangle {t:?}");
+                        twice
+                    })
+                    .sum();
+                assert_eq!(out.len(), 2, "start {start}, reversed {reversed}");
+                assert_eq!(sum, twice_area, "start {start}, reversed {reversed}");
+            }
+        }
+    }
+}

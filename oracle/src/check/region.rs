@@ -506,6 +506,30 @@ impl Region {
         w
     }
 
+    /// Whether segment `a b`, which crosses edge `i` properly, does so on a piece of it with
+    /// net jump 0 (the segment meets the edge's line once, so then nowhere else).
+    pub(crate) fn crosses_zero_width_piece(
+        &self,
+        i: usize,
+        a: P,
+        b: P,
+        inside: &mut Vec<u32>,
+    ) -> bool {
+        let e = self.edges[i];
+        let (p, q) = (self.rep[e.a as usize], self.rep[e.b as usize]);
+        self.split(p, q, inside);
+        let mut from = p;
+        for &to in inside.iter().chain(std::iter::once(&q)) {
+            if self.pieces.get(&(from.min(to), from.max(to))) == Some(&0)
+                && cross_properly(a, b, self.pts[from as usize], self.pts[to as usize])
+            {
+                return true;
+            }
+            from = to;
+        }
+        false
+    }
+
     /// Whether `probe`, lying on edge `i`, lies on a piece of it with net jump 0.
     fn on_zero_width_piece(&self, i: usize, probe: &Probe) -> bool {
         if self.zero_width.get(i) == Some(&true) {

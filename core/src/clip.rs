@@ -219,6 +219,7 @@ impl<'a> Clipper<'a> {
     fn fast(&mut self, start: NodeId) -> Result<(), Error> {
         let mut ear = start;
         let mut stop = ear;
+        let mut rescanned = false;
         while self.len > 3 {
             if self.reflex_count <= 1 && !self.no_fan && self.try_fan(ear) {
                 return Ok(());
@@ -237,12 +238,22 @@ impl<'a> Clipper<'a> {
                     // stop, at a live node or it never comes round to `stop`
                     ear = self.live(ear);
                     stop = ear;
+                    rescanned = false;
                     continue;
                 }
                 self.cx.pool.get_mut(ear).not_ear = true;
             }
             ear = self.cx.pool.next(ear);
             if ear == stop {
+                if !rescanned && self.may_rescan() {
+                    // A lap without an ear. "Not an ear" holds until a neighbour changes,
+                    // but a cut elsewhere can turn a reflex vertex inside a marked tip's
+                    // triangle convex, or (where positions repeat) change a tip that is no
+                    // neighbour: clear the marks and look once more, at most once per cut.
+                    rescanned = true;
+                    self.clear_not_ear(ear);
+                    continue;
+                }
                 ear = self.stuck(ear)?;
                 ear = self.live(ear);
                 stop = ear;
@@ -252,11 +263,27 @@ impl<'a> Clipper<'a> {
         Ok(())
     }
 
+    /// Whether a lap without an ear may look once more. Not for crossing (lenient) input:
+    /// there the repairs of [`Clipper::stuck`] decide, as tuned against earcut's bounds.
+    fn may_rescan(&self) -> bool {
+        !self.cx.lenient || self.cx.crossings.is_empty()
+    }
+
+    /// Clears the "not an ear" marks of the ring through `start`.
+    fn clear_not_ear(&mut self, start: NodeId) {
+        let mut n = start;
+        for _ in 0..self.len {
+            self.cx.pool.get_mut(n).not_ear = false;
+            n = self.cx.pool.next(n);
+        }
+    }
+
     /// Mei et al.: always the ear with the smallest angle at its tip.
     fn quality(&mut self, start: NodeId) -> Result<(), Error> {
         self.cx.clip.heap.clear();
         self.seed_heap(start);
         let mut last = start;
+        let mut rescanned = false;
         while self.len > 3 {
             let Some((_, n, stamp)) = self.cx.clip.heap.pop() else {
                 if self.avoid_crossed {
@@ -265,7 +292,15 @@ impl<'a> Clipper<'a> {
                     self.seed_heap(last);
                     continue;
                 }
-                // No ear queued: invalid input (or a bug). Re-seeding the queue after every
+                // No ear queued. Where positions repeat (weakly simple rings), cutting an
+                // ear can make an ear of a node that is no neighbour of it, so look once
+                // more over the whole ring, at most once per cut.
+                if !rescanned && self.may_rescan() {
+                    rescanned = true;
+                    self.seed_heap(last);
+                    continue;
+                }
+                // Still none: invalid input (or a bug). Re-seeding the queue after every
                 // repair would cost a full scan each time; the walk finishes such rings.
                 last = self.stuck(last)?;
                 return self.fast(last);
@@ -276,6 +311,7 @@ impl<'a> Clipper<'a> {
             }
             let prev = self.cx.pool.prev(n);
             last = self.cut(n);
+            rescanned = false;
             for m in [prev, last] {
                 let node = self.cx.pool.get(m);
                 if !node.removed {
@@ -588,11 +624,7 @@ impl<'a> Clipper<'a> {
         if self.avoid_crossed {
             // only ears at crossed edges are left: allow them and walk again
             self.avoid_crossed = false;
-            let mut n = at;
-            for _ in 0..self.len {
-                self.cx.pool.get_mut(n).not_ear = false;
-                n = self.cx.pool.next(n);
-            }
+            self.clear_not_ear(at);
             return Ok(at);
         }
         if let Some(n) = self.cure_local_intersections(at) {

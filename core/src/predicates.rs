@@ -82,6 +82,22 @@ pub(crate) fn within_box(a: Point, b: Point, p: Point) -> bool {
     p.x >= a.x.min(b.x) && p.x <= a.x.max(b.x) && p.y >= a.y.min(b.y) && p.y <= a.y.max(b.y)
 }
 
+/// Compares the directions `o → p` and `o → q` by angle, counter-clockwise from the
+/// positive x axis (`p`, `q` ≠ `o`). `Equal` means the same direction. Exact.
+pub(crate) fn cmp_around(o: Point, p: Point, q: Point) -> core::cmp::Ordering {
+    // the half-plane [0, π) before [π, 2π), then the turn between them
+    let lower = |d: Point| d.y < o.y || (d.y == o.y && d.x < o.x);
+    match (lower(p), lower(q)) {
+        (false, true) => core::cmp::Ordering::Less,
+        (true, false) => core::cmp::Ordering::Greater,
+        _ => match orient2d(o, p, q) {
+            Orientation::CounterClockwise => core::cmp::Ordering::Less,
+            Orientation::Clockwise => core::cmp::Ordering::Greater,
+            Orientation::Collinear => core::cmp::Ordering::Equal,
+        },
+    }
+}
+
 /// Lexicographic order of points: by x, then by y. Exact.
 #[inline]
 pub(crate) fn cmp_xy(a: Point, b: Point) -> core::cmp::Ordering {

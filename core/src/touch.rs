@@ -18,7 +18,9 @@
 
 use crate::nest::same_ray;
 use crate::pool::NodeId;
-use crate::predicates::{approx_cross, orient2d, Orientation, Point};
+use core::cmp::Ordering;
+
+use crate::predicates::{approx_cross, cmp_around, orient2d, Orientation, Point};
 use crate::triangulator::{Context, Ring};
 
 /// Re-links every shared position and re-traces the rings; returns the number of holes.
@@ -79,7 +81,7 @@ fn relink(cx: &mut Context, i: usize, j: usize) {
     // one-to-one? every successor used once
     let pairs = &mut cx.relink;
     pairs.sort_unstable_by_key(|&(_, t)| t);
-    if pairs.windows(2).any(|w| w[0].1 == w[1].1) {
+    if pairs.windows(2).any(|w| w[0].1 == w[1].1) && (cx.lenient || !relink_bundles(cx, i, j)) {
         return;
     }
     for k in 0..cx.relink.len() {
@@ -88,6 +90,80 @@ fn relink(cx: &mut Context, i: usize, j: usize) {
         cx.pool.get_mut(target).prev = n;
         cx.pool.touch(n);
     }
+}
+
+/// The face-walk rule where edges at X share directions (segments walked several times,
+/// as when rounding collapses a spiral), which the rule above cannot order.
+///
+/// Around a position of a weakly simple boundary, arriving and leaving edges alternate;
+/// edges of one direction (a bundle) lie on one another, so their order within the bundle
+/// is free, and the sequence must alternate across bundles. With the sequence fixed, each
+/// arriving edge continues along the leaving edge just clockwise of it, as the rule says.
+/// Fills `cx.relink`; false when the edges around X cannot alternate (invalid input).
+fn relink_bundles(cx: &mut Context, i: usize, j: usize) -> bool {
+    let o = cx.pool.p(cx.shared[i]);
+    // (far end, node arriving at X or target leaving X, arrives)
+    let mut ends: Vec<(Point, NodeId, bool)> = Vec::with_capacity(2 * (j - i));
+    for &n in &cx.shared[i..j] {
+        if live(cx, n) {
+            let (prev, next) = (cx.pool.prev(n), cx.pool.next(n));
+            ends.push((cx.pool.p(prev), n, true));
+            ends.push((cx.pool.p(next), next, false));
+        }
+    }
+    ends.sort_by(|a, b| cmp_around(o, a.0, b.0));
+    // bundles of one direction, as ranges of `ends`
+    let mut bundles = Vec::new();
+    let mut k = 0;
+    while k < ends.len() {
+        let mut e = k + 1;
+        while e < ends.len() && cmp_around(o, ends[k].0, ends[e].0) == Ordering::Equal {
+            e += 1;
+        }
+        bundles.push(k..e);
+        k = e;
+    }
+    for first_arrives in [true, false] {
+        // arrange each bundle to alternate, starting with what the sequence expects
+        let mut expect = first_arrives;
+        let mut ordered: Vec<&(Point, NodeId, bool)> = Vec::with_capacity(ends.len());
+        let mut ok = true;
+        for range in &bundles {
+            let bundle = &ends[range.clone()];
+            let ins = bundle.iter().filter(|e| e.2).count();
+            let outs = bundle.len() - ins;
+            let (want, other) = if expect { (ins, outs) } else { (outs, ins) };
+            if want != other && want != other + 1 {
+                ok = false;
+                break;
+            }
+            let mut wanted = bundle.iter().filter(|e| e.2 == expect);
+            let mut others = bundle.iter().filter(|e| e.2 != expect);
+            for _ in 0..other {
+                ordered.extend(wanted.next());
+                ordered.extend(others.next());
+            }
+            if want > other {
+                ordered.extend(wanted.next());
+                expect = !expect;
+            }
+        }
+        if !ok || expect != first_arrives {
+            continue;
+        }
+        // in counter-clockwise order the leaving edge just clockwise of an arriving one is
+        // the one before it
+        cx.relink.clear();
+        for k in 0..ordered.len() {
+            let (_, n, arrives) = *ordered[k];
+            if arrives {
+                let (_, target, _) = *ordered[(k + ordered.len() - 1) % ordered.len()];
+                cx.relink.push((n, target));
+            }
+        }
+        return true;
+    }
+    false
 }
 
 /// Rotating clockwise around `o` from the direction towards `back`: whether the direction

@@ -59,16 +59,11 @@ pub const KNOWN_GAPS: [KnownGap; 1] = [KnownGap {
 /// still records what happens), and a replay fails once such a case passes — delete its
 /// entry then, so the case guards the fix.
 ///
-/// The two weakly simple cases `polytri precision` had found first
-/// (`cases/ring_doubles_back_along_its_own_edge`, `cases/zero_area_hole_of_collinear_points`)
-/// pass since the oracle's contract says zero-width boundary parts enclose nothing. One
-/// remains: a spiral that f32 rounding collapsed into a ring visiting two positions three
-/// times each, where the fast strategy gets stuck.
-pub const KNOWN_FAILURES: [KnownFailure; 1] = [KnownFailure {
-    case: "cases/spiral_collapsed_by_f32_rounding",
-    strategies: &["fast"],
-    issue: "issue 2",
-}];
+/// Empty: the weakly simple cases `polytri precision` found
+/// (`cases/ring_doubles_back_along_its_own_edge`, `cases/zero_area_hole_of_collinear_points`,
+/// `cases/spiral_collapsed_by_f32_rounding`) pass since the oracle's contract says
+/// zero-width boundary parts enclose nothing and touch orders edges of one direction.
+pub const KNOWN_FAILURES: [KnownFailure; 0] = [];
 
 /// A case polytri still gets wrong; see [`KNOWN_FAILURES`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -204,13 +204,16 @@ fn retrace(cx: &mut Context) {
         let input = cx.rings[ring].input;
         let (mut len, mut rightmost, mut hole) = (0, n, false);
         let mut area = 0.0;
+        let mut flat = true;
         let mut m = n;
         loop {
             cx.pool.get_mut(m).ring = index;
             len += 1;
             area += approx_cross(cx.pool.p(m), cx.pool.p(cx.pool.next(m)));
             let (p, best) = (cx.pool.p(m), cx.pool.p(rightmost));
-            let cw = turn(cx, m) == Orientation::Clockwise;
+            let t = turn(cx, m);
+            flat &= t == Orientation::Collinear;
+            let cw = t == Orientation::Clockwise;
             if p.x > best.x || (p.x == best.x && p.y < best.y) {
                 (rightmost, hole) = (m, cw);
             } else if p == best && cw && !hole {
@@ -233,7 +236,10 @@ fn retrace(cx: &mut Context) {
             len,
             rightmost,
             depth: u32::from(hole),
-            alive: true,
+            // A cycle that never turns is a zero-width wall (edges walked both ways):
+            // it encloses nothing, and no hole may bridge to it. (Lenient mode keeps it:
+            // on crossing input its repairs were tuned with such walls in place.)
+            alive: !flat || cx.lenient,
             merged: false,
             component: index,
         });

@@ -20,7 +20,7 @@ use crate::nest::same_ray;
 use crate::pool::NodeId;
 use core::cmp::Ordering;
 
-use crate::predicates::{approx_cross, cmp_around, orient2d, Orientation, Point};
+use crate::predicates::{approx_cross, cmp_around, cmp_xy, orient2d, Orientation, Point};
 use crate::triangulator::{Context, Ring};
 
 /// Re-links every shared position and re-traces the rings; returns the number of holes.
@@ -81,7 +81,14 @@ fn relink(cx: &mut Context, i: usize, j: usize) {
     // one-to-one? every successor used once
     let pairs = &mut cx.relink;
     pairs.sort_unstable_by_key(|&(_, t)| t);
-    if pairs.windows(2).any(|w| w[0].1 == w[1].1) && (cx.lenient || !relink_bundles(cx, i, j)) {
+    let conflict = pairs.windows(2).any(|w| w[0].1 == w[1].1);
+    if !cx.lenient && (conflict || (all_doubled(cx, i, j) && is_crack(cx, i, j))) {
+        // edges of one direction need ordering: conflicting choices, or a crack the rule
+        // above would close into walls
+        if !relink_bundles(cx, i, j) {
+            return;
+        }
+    } else if conflict {
         return;
     }
     for k in 0..cx.relink.len() {
@@ -164,6 +171,87 @@ fn relink_bundles(cx: &mut Context, i: usize, j: usize) -> bool {
         return true;
     }
     false
+}
+
+/// Whether every edge at the position of `cx.shared[i..j]` is doubled: as many edges
+/// arrive from each far end as leave towards it (a wall or a crack runs through). Quadratic
+/// in the visits, which are few; allocates nothing.
+fn all_doubled(cx: &Context, i: usize, j: usize) -> bool {
+    let nodes = &cx.shared[i..j];
+    let count = |p: Point, arriving: bool| {
+        nodes
+            .iter()
+            .filter(|&&n| live(cx, n))
+            .filter(|&&n| {
+                let m = if arriving {
+                    cx.pool.prev(n)
+                } else {
+                    cx.pool.next(n)
+                };
+                cx.pool.p(m) == p
+            })
+            .count()
+    };
+    nodes.iter().filter(|&&n| live(cx, n)).all(|&n| {
+        let (a, b) = (cx.pool.p(cx.pool.prev(n)), cx.pool.p(cx.pool.next(n)));
+        count(a, true) == count(a, false) && count(b, true) == count(b, false)
+    })
+}
+
+/// Whether the region lies on both sides of the doubled edge from `x` to `y` — a crack
+/// into it rather than a wall between two parts of the outside — read at `y`, where an
+/// edge that is not doubled says which sectors are inside. `None` when every edge at `y`
+/// is doubled too.
+fn crack_at(cx: &Context, y_node: NodeId, x: Point) -> Option<bool> {
+    let y = cx.pool.p(y_node);
+    let shared = &cx.shared;
+    let from = shared.partition_point(|&n| cmp_xy(cx.pool.p(n), y) == Ordering::Less);
+    let to = shared.partition_point(|&n| cmp_xy(cx.pool.p(n), y) != Ordering::Greater);
+    let nodes = &shared[from..to];
+    // (far end, +1 arriving / -1 leaving), counter-clockwise around y
+    let mut ends: Vec<(Point, i32)> = Vec::new();
+    let mut add = |n: NodeId| {
+        ends.push((cx.pool.p(cx.pool.prev(n)), 1));
+        ends.push((cx.pool.p(cx.pool.next(n)), -1));
+    };
+    if nodes.is_empty() {
+        add(y_node); // y is visited once
+    } else {
+        nodes.iter().filter(|&&n| live(cx, n)).for_each(|&n| add(n));
+    }
+    ends.sort_by(|a, b| cmp_around(y, a.0, b.0));
+    // net count per direction, in order
+    let mut bundles: Vec<(Point, i32)> = Vec::new();
+    for (p, d) in ends {
+        match bundles.last_mut() {
+            Some(b) if cmp_around(y, b.0, p) == Ordering::Equal => b.1 += d,
+            _ => bundles.push((p, d)),
+        }
+    }
+    // just counter-clockwise of an arriving edge lies the outside, of a leaving one the
+    // inside; doubled bundles change nothing
+    let last = bundles.iter().rposition(|b| b.1 != 0)?;
+    let mut inside = bundles[last].1 < 0;
+    for k in 0..bundles.len() {
+        let b = bundles[(last + 1 + k) % bundles.len()];
+        if b.1 != 0 {
+            inside = b.1 < 0;
+        } else if cmp_around(y, b.0, x) == Ordering::Equal {
+            return Some(inside);
+        }
+    }
+    None
+}
+/// Whether the doubled edges through the position of `cx.shared[i..j]` are cracks into the
+/// region (its inside on both sides) rather than walls, as read at their far ends; walls
+/// when no far end tells.
+fn is_crack(cx: &Context, i: usize, j: usize) -> bool {
+    let x = cx.pool.p(cx.shared[i]);
+    cx.shared[i..j]
+        .iter()
+        .filter(|&&n| live(cx, n))
+        .find_map(|&n| crack_at(cx, cx.pool.prev(n), x))
+        .unwrap_or(false)
 }
 
 /// Rotating clockwise around `o` from the direction towards `back`: whether the direction

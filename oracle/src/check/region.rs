@@ -518,12 +518,23 @@ impl Region {
         let e = self.edges[i];
         let (p, q) = (self.rep[e.a as usize], self.rep[e.b as usize]);
         self.split(p, q, inside);
+        let zero = |u: u32, v: u32| self.pieces.get(&(u.min(v), u.max(v))) == Some(&0);
         let mut from = p;
-        for &to in inside.iter().chain(std::iter::once(&q)) {
-            if self.pieces.get(&(from.min(to), from.max(to))) == Some(&0)
+        for (k, &to) in inside.iter().chain(std::iter::once(&q)).enumerate() {
+            if zero(from, to)
                 && cross_properly(a, b, self.pts[from as usize], self.pts[to as usize])
             {
                 return true;
+            }
+            // through a split point between two zero-width pieces
+            if k < inside.len() {
+                let after = inside.get(k + 1).copied().unwrap_or(q);
+                if zero(from, to)
+                    && zero(to, after)
+                    && strictly_inside_segment(a, b, self.pts[to as usize])
+                {
+                    return true;
+                }
             }
             from = to;
         }

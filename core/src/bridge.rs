@@ -186,9 +186,26 @@ fn find_touching(cx: &Context, m: NodeId) -> Option<NodeId> {
         let (xn, xp) = (cx.pool.p(cx.pool.next(x)), cx.pool.p(cx.pool.prev(x)));
         match corner_contains(pm, xn, xp, mn).or_else(|| corner_contains(pm, xn, xp, mp)) {
             Some(inside) => inside,
-            None => same_ray(pm, mn, xp) && same_ray(pm, mp, xn),
+            // The hole's corner and the polygon's coincide: a hole cancelling a lobe of its
+            // polygon, or an island inside the hole touching it there. Only the first is
+            // the hole's polygon, as nesting depth tells.
+            None => {
+                same_ray(pm, mn, xp)
+                    && same_ray(pm, mp, xn)
+                    && input_depth(cx, x) < input_depth(cx, m)
+            }
         }
     })
+}
+
+/// The nesting depth of the input ring node `n` came from (rings re-traced by `touch`
+/// keep their input's number; the first ring of that number holds the depth `nest` gave).
+fn input_depth(cx: &Context, n: NodeId) -> u32 {
+    let input = cx.rings[cx.pool.get(n).ring as usize].input;
+    cx.rings
+        .iter()
+        .find(|r| r.input == input)
+        .map_or(0, |r| r.depth)
 }
 
 /// The node M connects to, found by the ray cast and the triangle search; `None` when the

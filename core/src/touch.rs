@@ -82,10 +82,12 @@ fn relink(cx: &mut Context, i: usize, j: usize) {
     let pairs = &mut cx.relink;
     pairs.sort_unstable_by_key(|&(_, t)| t);
     let conflict = pairs.windows(2).any(|w| w[0].1 == w[1].1);
-    if !cx.lenient && (conflict || (all_doubled(cx, i, j) && is_crack(cx, i, j))) {
-        // edges of one direction need ordering: conflicting choices, or a crack the rule
-        // above would close into walls
-        if !relink_bundles(cx, i, j) {
+    if !cx.lenient && (conflict || any_doubled(cx, i, j)) {
+        // Edges of one direction need ordering: the rule above sends an edge straight
+        // back first, which closes a wall, but a crack into the region is walked along.
+        // Where every edge is doubled only the far ends can tell which it is.
+        let crack = !all_doubled(cx, i, j) || is_crack(cx, i, j);
+        if !relink_bundles(cx, i, j, crack) {
             return;
         }
     } else if conflict {
@@ -107,7 +109,7 @@ fn relink(cx: &mut Context, i: usize, j: usize) {
 /// is free, and the sequence must alternate across bundles. With the sequence fixed, each
 /// arriving edge continues along the leaving edge just clockwise of it, as the rule says.
 /// Fills `cx.relink`; false when the edges around X cannot alternate (invalid input).
-fn relink_bundles(cx: &mut Context, i: usize, j: usize) -> bool {
+fn relink_bundles(cx: &mut Context, i: usize, j: usize, crack: bool) -> bool {
     let o = cx.pool.p(cx.shared[i]);
     // (far end, node arriving at X or target leaving X, arrives)
     let mut ends: Vec<(Point, NodeId, bool)> = Vec::with_capacity(2 * (j - i));
@@ -130,7 +132,9 @@ fn relink_bundles(cx: &mut Context, i: usize, j: usize) -> bool {
         bundles.push(k..e);
         k = e;
     }
-    for first_arrives in [true, false] {
+    // Where every bundle is doubled both starts alternate: arriving first makes cracks,
+    // leaving first walls. Elsewhere the bundles that are not doubled decide.
+    for first_arrives in [crack, !crack] {
         // arrange each bundle to alternate, starting with what the sequence expects
         let mut expect = first_arrives;
         let mut ordered: Vec<&(Point, NodeId, bool)> = Vec::with_capacity(ends.len());
@@ -171,6 +175,19 @@ fn relink_bundles(cx: &mut Context, i: usize, j: usize) -> bool {
         return true;
     }
     false
+}
+
+/// Whether some edge at the position of `cx.shared[i..j]` arrives from where another one
+/// leaves to: a segment walked both ways, a wall or a crack. Allocates nothing.
+fn any_doubled(cx: &Context, i: usize, j: usize) -> bool {
+    let nodes = &cx.shared[i..j];
+    nodes.iter().filter(|&&n| live(cx, n)).any(|&n| {
+        let from = cx.pool.p(cx.pool.prev(n));
+        nodes
+            .iter()
+            .filter(|&&m| live(cx, m))
+            .any(|&m| cx.pool.p(cx.pool.next(m)) == from)
+    })
 }
 
 /// Whether every edge at the position of `cx.shared[i..j]` is doubled: as many edges

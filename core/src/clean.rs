@@ -322,31 +322,35 @@ fn orient_ring(cx: &mut Context, r: usize) {
 }
 
 /// At the rightmost-lowest position X of a ring visiting it several times: every edge at X
-/// points into the closed left half-plane, and the one turned furthest clockwise from +x
-/// (the lowest) bounds the outside. A counter-clockwise ring arrives along it, a clockwise
-/// one leaves. `None` when an arriving and a leaving edge share that direction.
+/// points into the closed left half-plane, and the lowest one (turned furthest clockwise
+/// from +x) bounds the outside. A counter-clockwise ring arrives along it, a clockwise one
+/// leaves. Segments walked both ways (walls, cracks) have the outside on both sides or on
+/// neither, so they are skipped: the lowest direction with more edges arriving than
+/// leaving, or fewer, decides. `None` when there is none.
 fn outermost_edge_arrives(cx: &Context, at: NodeId) -> Option<bool> {
     let pool = &cx.pool;
     let x = pool.p(at);
-    // (other end, arrives) of the lowest edge so far, and whether it is tied
-    let mut lowest: Option<(Point, bool)> = None;
-    let mut tied = false;
-    for n in pool.ring(at).filter(|&n| pool.p(n) == x) {
-        for (q, arrives) in [(pool.p(pool.prev(n)), true), (pool.p(pool.next(n)), false)] {
-            match lowest {
-                None => lowest = Some((q, arrives)),
-                // within a half-plane, counter-clockwise of the lowest means lower still
-                Some((e, a)) => match orient2d(x, e, q) {
-                    Orientation::CounterClockwise => (lowest, tied) = (Some((q, arrives)), false),
-                    Orientation::Collinear if a != arrives => tied = true,
-                    _ => {}
-                },
+    let visits = || pool.ring(at).filter(move |&n| pool.p(n) == x);
+    // net arrivals along the direction towards q
+    let net = |q: Point| -> i64 {
+        visits()
+            .map(|n| {
+                let along = |m: NodeId| orient2d(x, q, pool.p(m)) == Orientation::Collinear;
+                i64::from(along(pool.prev(n))) - i64::from(along(pool.next(n)))
+            })
+            .sum()
+    };
+    let mut lowest: Option<(Point, i64)> = None;
+    for n in visits() {
+        for q in [pool.p(pool.prev(n)), pool.p(pool.next(n))] {
+            // within a half-plane, counter-clockwise of the lowest means lower still
+            if lowest.is_none_or(|(e, _)| orient2d(x, e, q) == Orientation::CounterClockwise) {
+                let d = net(q);
+                if d != 0 {
+                    lowest = Some((q, d));
+                }
             }
         }
     }
-    if tied {
-        None
-    } else {
-        lowest.map(|(_, arrives)| arrives)
-    }
+    lowest.map(|(_, d)| d > 0)
 }

@@ -344,7 +344,10 @@ fn outermost_edge_arrives(cx: &Context, at: NodeId) -> Option<bool> {
     for n in visits() {
         for q in [pool.p(pool.prev(n)), pool.p(pool.next(n))] {
             // within a half-plane, counter-clockwise of the lowest means lower still
-            if lowest.is_none_or(|(e, _)| orient2d(x, e, q) == Orientation::CounterClockwise) {
+            let lower = lowest.map_or(true, |(e, _)| {
+                orient2d(x, e, q) == Orientation::CounterClockwise
+            });
+            if lower {
                 let d = net(q);
                 if d != 0 {
                     lowest = Some((q, d));

@@ -34,8 +34,10 @@ pub(crate) fn clean(cx: &mut Context, untwist: bool) -> Result<(), Error> {
         sweep(cx, true)?;
     }
     canonical_vertices(cx);
+    // nodes from here on are the ones edge splits add
+    let first_split = cx.pool.len();
     split_touched_edges(cx);
-    collect_shared(cx);
+    collect_shared(cx, first_split);
     for r in 0..cx.rings.len() {
         if cx.rings[r].alive {
             orient_ring(cx, r);
@@ -258,7 +260,11 @@ fn split_touched_edges(cx: &mut Context) {
 
 /// Lists every node at a position held by more than one node (rings touching there, or a
 /// ring touching itself), grouped by position, for `touch` to join them properly.
-fn collect_shared(cx: &mut Context) {
+///
+/// `first_split` is the pool's length before `split_touched_edges`: the nodes from there on
+/// are the splits. (`sweep.order` holds live nodes only, so its length is no such bound once
+/// `filter_ring` dropped vertices.)
+fn collect_shared(cx: &mut Context, first_split: usize) {
     cx.shared.clear();
     let order = &cx.sweep.order;
     let mut i = 0;
@@ -277,7 +283,7 @@ fn collect_shared(cx: &mut Context) {
     for t in &cx.touches {
         cx.shared.push(t.vertex);
     }
-    let split_nodes = cx.sweep.order.len()..cx.pool.len();
+    let split_nodes = first_split..cx.pool.len();
     cx.shared.extend(split_nodes.map(|n| NodeId(n as u32)));
     let pool = &cx.pool;
     cx.shared

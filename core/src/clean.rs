@@ -22,17 +22,24 @@ use crate::triangulator::Context;
 use crate::validate::{self, Crossing};
 use crate::Error;
 
-/// Runs the clean stage over every loaded ring. With `untwist` (lenient mode), bow ties are
-/// uncrossed first where the sweep finds crossing edges.
-pub(crate) fn clean(cx: &mut Context, untwist: bool) -> Result<(), Error> {
+/// Runs the clean stage over every loaded ring. With `untwist` (lenient mode, the second
+/// run over an input whose first run found crossings), bow ties are uncrossed first.
+/// Returns false when untwisting changed nothing: that run would repeat the first exactly,
+/// so the stage stops there.
+pub(crate) fn clean(cx: &mut Context, untwist: bool) -> Result<bool, Error> {
     for r in 0..cx.rings.len() {
         filter_ring(cx, r);
     }
-    // The untwisting run sees the input the first run found crossings in: no proof then.
-    sweep(cx, !untwist)?;
-    if untwist && cx.lenient && !cx.crossings.is_empty() && untwist_bow_ties(cx) {
-        sweep(cx, true)?;
+    if untwist {
+        // Loading and filtering are deterministic, so these are the first run's nodes and
+        // `cx.crossings` still holds what its sweep found in them: report those crossings
+        // as that sweep did, without sweeping again.
+        report_crossings(cx);
+        if !untwist_bow_ties(cx) {
+            return Ok(false);
+        }
     }
+    sweep(cx, true)?;
     canonical_vertices(cx);
     // nodes from here on are the ones edge splits add
     let first_split = cx.pool.len();
@@ -43,7 +50,7 @@ pub(crate) fn clean(cx: &mut Context, untwist: bool) -> Result<(), Error> {
             orient_ring(cx, r);
         }
     }
-    Ok(())
+    Ok(true)
 }
 
 /// Drops repeated, collinear and spike vertices from ring `r`; kills it when fewer than
@@ -146,13 +153,18 @@ fn sweep(cx: &mut Context, try_prune: bool) -> Result<(), Error> {
                 edge_b: nb.vertex as usize,
             });
         }
-        for i in 0..cx.crossings.len() {
-            let a = cx.pool.get(cx.crossings[i].a);
-            let (ring, vertex) = (cx.rings[a.ring as usize].input, a.vertex);
-            cx.repair(RepairKind::EdgesCross, ring, vertex);
-        }
+        report_crossings(cx);
     }
     Ok(())
+}
+
+/// Lenient mode: records a repair for each crossing in `cx.crossings`.
+fn report_crossings(cx: &mut Context) {
+    for i in 0..cx.crossings.len() {
+        let a = cx.pool.get(cx.crossings[i].a);
+        let (ring, vertex) = (cx.rings[a.ring as usize].input, a.vertex);
+        cx.repair(RepairKind::EdgesCross, ring, vertex);
+    }
 }
 
 /// Lenient mode: swaps p and q wherever edge a → p crosses edge q → b two steps on (a

@@ -138,9 +138,13 @@ fn run<T: Coord>(
         cx.starts.clear();
         cx.starts
             .extend(cx.rings.iter().filter(|r| r.alive).map(|r| r.start));
-        // the grid of the edges as they are now (bridge builds its own afterwards)
-        nest::index_all_edges(cx);
-        validate::mark_crossed(&mut cx.pool, &cx.edge_grid, &cx.starts, &mut cx.edges);
+        // comparing the edges whose boxes overlap usually suffices; where that gives up
+        // (many long edges over each other), the grid of the edges as they are now (bridge
+        // builds its own afterwards) finds the rest
+        if !crate::prune::mark_crossed(&mut cx.pool, &cx.starts, &mut cx.prune) {
+            nest::index_all_edges(cx);
+            validate::mark_crossed(&mut cx.pool, &cx.edge_grid, &cx.starts, &mut cx.edges);
+        }
     }
     bridge::bridge(cx)?;
     let polygons = if cx.lenient && !cx.crossings.is_empty() {

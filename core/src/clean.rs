@@ -38,8 +38,24 @@ pub(crate) fn clean(cx: &mut Context, untwist: bool) -> Result<bool, Error> {
         if !untwist_bow_ties(cx) {
             return Ok(false);
         }
+        // Untwisting relinks nodes but keeps them and their positions, so the first run's
+        // sweep order holds. A crossing it found that untwisting left alone means no proof
+        // of edges apart can succeed; without trying one, that order is still in place.
+        let pool = &cx.pool;
+        let crossed = |a: NodeId| (pool.p(a), pool.p(pool.next(a)));
+        let still_crossed = cx.crossings.iter().any(|c| {
+            let ((a, b), (p, q)) = (crossed(c.a), crossed(c.b));
+            crate::clip::crosses(a, b, p, q)
+        });
+        if still_crossed {
+            cx.sweep.order_is_sorted = true;
+            sweep(cx, false)?;
+        } else {
+            sweep(cx, true)?;
+        }
+    } else {
+        sweep(cx, true)?;
     }
-    sweep(cx, true)?;
     canonical_vertices(cx);
     // nodes from here on are the ones edge splits add
     let first_split = cx.pool.len();

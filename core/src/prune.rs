@@ -66,7 +66,7 @@ pub(crate) fn mark_crossed(pool: &mut Pool, starts: &[NodeId], scratch: &mut Pru
     flagged.clear();
     let done = scan(scratch, |e, f| {
         let (a, b, c, d) = (pool.p(e.from), pool.p(e.to), pool.p(f.from), pool.p(f.to));
-        if cross_properly(a, b, c, d) {
+        if crate::clip::crosses(a, b, c, d) {
             flagged.push(e.from);
             flagged.push(f.from);
         }
@@ -256,15 +256,6 @@ fn meet(pool: &Pool, e: &EdgeBox, f: &EdgeBox) -> bool {
     segments_meet(a, b, c, d)
 }
 
-/// Whether segments a–b and c–d cross at a point interior to both (exact): each has the
-/// other's endpoints strictly on opposite sides of its line.
-fn cross_properly(a: Point, b: Point, c: Point, d: Point) -> bool {
-    let opposite = |p: Orientation, q: Orientation| {
-        p != Orientation::Collinear && q != Orientation::Collinear && p != q
-    };
-    opposite(orient2d(a, b, c), orient2d(a, b, d)) && opposite(orient2d(c, d, a), orient2d(c, d, b))
-}
-
 /// Whether closed segments a–b and c–d have a point in common (exact).
 fn segments_meet(a: Point, b: Point, c: Point, d: Point) -> bool {
     use Orientation::Collinear;
@@ -356,7 +347,7 @@ mod tests {
             let (a, b) = (pool.p(e), pool.p(pool.next(e)));
             let crossed = edges.iter().any(|&f| {
                 let (c, d) = (pool.p(f), pool.p(pool.next(f)));
-                cross_properly(a, b, c, d)
+                crate::clip::crosses(a, b, c, d)
             });
             let flagged = pool.get(e).crossed;
             assert!(crossed || !flagged, "edge {e:?} flagged without a crossing");

@@ -18,6 +18,10 @@ use crate::predicates::{orient2d, within_box, Orientation, Point};
 /// Box comparisons allowed per edge (plus a constant) before the proof gives up.
 const BUDGET_PER_EDGE: usize = 16;
 
+/// The same for [`mark_crossed`]: crossing input has many boxes over each other, and giving
+/// up costs a second, slower pass over the edges.
+const CROSSED_BUDGET_PER_EDGE: usize = 256;
+
 /// One edge `from → to` with its bounding box.
 #[derive(Clone, Copy, Debug)]
 struct EdgeBox {
@@ -53,7 +57,7 @@ pub(crate) fn edges_apart(
     nodes: &mut Vec<NodeId>,
 ) -> bool {
     collect_boxes(pool, starts, &mut scratch.boxes, Some(nodes));
-    scan(scratch, |e, f| meet(pool, e, f)) == Scan::Done
+    scan(scratch, BUDGET_PER_EDGE, |e, f| meet(pool, e, f)) == Scan::Done
 }
 
 /// Lenient mode: flags every edge (by its start node) of the rings through `starts` that
@@ -64,7 +68,7 @@ pub(crate) fn mark_crossed(pool: &mut Pool, starts: &[NodeId], scratch: &mut Pru
     collect_boxes(pool, starts, &mut scratch.boxes, None);
     let mut flagged = core::mem::take(&mut scratch.flagged);
     flagged.clear();
-    let done = scan(scratch, |e, f| {
+    let done = scan(scratch, CROSSED_BUDGET_PER_EDGE, |e, f| {
         let (a, b, c, d) = (pool.p(e.from), pool.p(e.to), pool.p(f.from), pool.p(f.to));
         if crate::clip::crosses(a, b, c, d) {
             flagged.push(e.from);
@@ -130,21 +134,30 @@ enum Scan {
     OutOfBudget,
 }
 
-/// Visits the pairs of `scratch.boxes` whose boxes overlap until `visit` returns true.
-fn scan(scratch: &mut PruneScratch, visit: impl FnMut(&EdgeBox, &EdgeBox) -> bool) -> Scan {
+/// Visits the pairs of `scratch.boxes` whose boxes overlap until `visit` returns true,
+/// allowing `per_edge` box comparisons (and cell listings) per edge.
+fn scan(
+    scratch: &mut PruneScratch,
+    per_edge: usize,
+    visit: impl FnMut(&EdgeBox, &EdgeBox) -> bool,
+) -> Scan {
+    let budget = per_edge * scratch.boxes.len() + 64;
     if scratch.boxes.len() <= SMALL {
-        scan_sorted(&mut scratch.boxes, visit)
+        scan_sorted(&mut scratch.boxes, budget, visit)
     } else {
-        scan_grid(scratch, visit)
+        scan_grid(scratch, budget, visit)
     }
 }
 
 /// A few edges: sort the boxes by their left sides and compare each with the boxes that
 /// start before it ends.
-fn scan_sorted(boxes: &mut [EdgeBox], mut visit: impl FnMut(&EdgeBox, &EdgeBox) -> bool) -> Scan {
+fn scan_sorted(
+    boxes: &mut [EdgeBox],
+    mut budget: usize,
+    mut visit: impl FnMut(&EdgeBox, &EdgeBox) -> bool,
+) -> Scan {
     // coordinates are finite here (load dropped or refused the others)
     boxes.sort_unstable_by(|s, t| s.x0.total_cmp(&t.x0));
-    let mut budget = BUDGET_PER_EDGE * boxes.len() + 64;
     for (i, e) in boxes.iter().enumerate() {
         for f in &boxes[i + 1..] {
             if f.x0 > e.x1 {
@@ -167,6 +180,7 @@ fn scan_sorted(boxes: &mut [EdgeBox], mut visit: impl FnMut(&EdgeBox, &EdgeBox) 
 /// the cell of a point of the overlap, since cells are monotone in x and y.
 fn scan_grid(
     scratch: &mut PruneScratch,
+    mut budget: usize,
     mut visit: impl FnMut(&EdgeBox, &EdgeBox) -> bool,
 ) -> Scan {
     let PruneScratch {
@@ -187,7 +201,6 @@ fn scan_grid(
     let row = |y: f64| (((y - y0) * sy) as usize).min(ny - 1);
     let cells_of = |b: &EdgeBox| (column(b.x0), column(b.x1), row(b.y0), row(b.y1));
     // counting sort of (cell, edge) entries; give up when long edges would list too many
-    let mut budget = BUDGET_PER_EDGE * boxes.len() + 64;
     start.clear();
     start.resize(nx * ny + 2, 0);
     for b in boxes.iter() {

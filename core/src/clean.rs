@@ -22,26 +22,51 @@ use crate::triangulator::Context;
 use crate::validate::{self, Crossing};
 use crate::Error;
 
-/// Runs the clean stage over every loaded ring. With `untwist` (lenient mode), bow ties are
-/// uncrossed first where the sweep finds crossing edges.
-pub(crate) fn clean(cx: &mut Context, untwist: bool) -> Result<(), Error> {
+/// Runs the clean stage over every loaded ring. With `untwist` (lenient mode, the second
+/// run over an input whose first run found crossings), bow ties are uncrossed first.
+/// Returns false when untwisting changed nothing: that run would repeat the first exactly,
+/// so the stage stops there.
+pub(crate) fn clean(cx: &mut Context, untwist: bool) -> Result<bool, Error> {
     for r in 0..cx.rings.len() {
         filter_ring(cx, r);
     }
-    // The untwisting run sees the input the first run found crossings in: no proof then.
-    sweep(cx, !untwist)?;
-    if untwist && cx.lenient && !cx.crossings.is_empty() && untwist_bow_ties(cx) {
+    if untwist {
+        // Loading and filtering are deterministic, so these are the first run's nodes and
+        // `cx.crossings` still holds what its sweep found in them: report those crossings
+        // as that sweep did, without sweeping again.
+        report_crossings(cx);
+        if !untwist_bow_ties(cx) {
+            return Ok(false);
+        }
+        // Untwisting relinks nodes but keeps them and their positions, so the first run's
+        // sweep order holds. A crossing it found that untwisting left alone means no proof
+        // of edges apart can succeed; without trying one, that order is still in place.
+        let pool = &cx.pool;
+        let crossed = |a: NodeId| (pool.p(a), pool.p(pool.next(a)));
+        let still_crossed = cx.crossings.iter().any(|c| {
+            let ((a, b), (p, q)) = (crossed(c.a), crossed(c.b));
+            crate::clip::crosses(a, b, p, q)
+        });
+        if still_crossed {
+            cx.sweep.order_is_sorted = true;
+            sweep(cx, false)?;
+        } else {
+            sweep(cx, true)?;
+        }
+    } else {
         sweep(cx, true)?;
     }
     canonical_vertices(cx);
+    // nodes from here on are the ones edge splits add
+    let first_split = cx.pool.len();
     split_touched_edges(cx);
-    collect_shared(cx);
+    collect_shared(cx, first_split);
     for r in 0..cx.rings.len() {
         if cx.rings[r].alive {
             orient_ring(cx, r);
         }
     }
-    Ok(())
+    Ok(true)
 }
 
 /// Drops repeated, collinear and spike vertices from ring `r`; kills it when fewer than
@@ -144,13 +169,18 @@ fn sweep(cx: &mut Context, try_prune: bool) -> Result<(), Error> {
                 edge_b: nb.vertex as usize,
             });
         }
-        for i in 0..cx.crossings.len() {
-            let a = cx.pool.get(cx.crossings[i].a);
-            let (ring, vertex) = (cx.rings[a.ring as usize].input, a.vertex);
-            cx.repair(RepairKind::EdgesCross, ring, vertex);
-        }
+        report_crossings(cx);
     }
     Ok(())
+}
+
+/// Lenient mode: records a repair for each crossing in `cx.crossings`.
+fn report_crossings(cx: &mut Context) {
+    for i in 0..cx.crossings.len() {
+        let a = cx.pool.get(cx.crossings[i].a);
+        let (ring, vertex) = (cx.rings[a.ring as usize].input, a.vertex);
+        cx.repair(RepairKind::EdgesCross, ring, vertex);
+    }
 }
 
 /// Lenient mode: swaps p and q wherever edge a → p crosses edge q → b two steps on (a
@@ -258,7 +288,11 @@ fn split_touched_edges(cx: &mut Context) {
 
 /// Lists every node at a position held by more than one node (rings touching there, or a
 /// ring touching itself), grouped by position, for `touch` to join them properly.
-fn collect_shared(cx: &mut Context) {
+///
+/// `first_split` is the pool's length before `split_touched_edges`: the nodes from there on
+/// are the splits. (`sweep.order` holds live nodes only, so its length is no such bound once
+/// `filter_ring` dropped vertices.)
+fn collect_shared(cx: &mut Context, first_split: usize) {
     cx.shared.clear();
     let order = &cx.sweep.order;
     let mut i = 0;
@@ -277,7 +311,7 @@ fn collect_shared(cx: &mut Context) {
     for t in &cx.touches {
         cx.shared.push(t.vertex);
     }
-    let split_nodes = cx.sweep.order.len()..cx.pool.len();
+    let split_nodes = first_split..cx.pool.len();
     cx.shared.extend(split_nodes.map(|n| NodeId(n as u32)));
     let pool = &cx.pool;
     cx.shared

@@ -423,11 +423,27 @@ impl<'a> Clipper<'a> {
         self.unlink(ear);
         self.tidy(a);
         self.tidy(c);
+        self.forget_stale_reflex();
         if self.cx.pool.get(c).removed {
             self.cx.pool.next(a)
         } else {
             c
         }
+    }
+
+    /// Without the grid, ear tests scan `cx.clip.reflex`, whose entries go stale as reflex
+    /// nodes turn convex: once most are stale, keep only the live ones (in their order, so
+    /// every scan finds what it found before). Amortized constant time per cut.
+    fn forget_stale_reflex(&mut self) {
+        let reflex = &mut self.cx.clip.reflex;
+        if self.indexed || reflex.len() <= 2 * self.reflex_count + 8 {
+            return;
+        }
+        let pool = &self.cx.pool;
+        reflex.retain(|&r| {
+            let node = pool.get(r);
+            !node.removed && node.reflex
+        });
     }
 
     /// `n` if it is live, else the first live node its links lead to: a removed node keeps

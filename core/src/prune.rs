@@ -8,6 +8,8 @@
 //! every pair whose boxes overlap is decided by exact `orient2d` signs. Both scans have a
 //! budget linear in the edges: when many long edges lie over each other they give up, say
 //! "not proved", and the full sweep runs as before. Either way the result is the sweep's.
+//!
+//! The same scans find the crossing edges of lenient input ([`mark_crossed`]).
 
 use crate::grid::{scale, shape};
 use crate::pool::{NodeId, Pool};
@@ -15,6 +17,10 @@ use crate::predicates::{orient2d, within_box, Orientation, Point};
 
 /// Box comparisons allowed per edge (plus a constant) before the proof gives up.
 const BUDGET_PER_EDGE: usize = 16;
+
+/// The same for [`mark_crossed`]: crossing input has many boxes over each other, and giving
+/// up costs a second, slower pass over the edges.
+const CROSSED_BUDGET_PER_EDGE: usize = 256;
 
 /// One edge `from → to` with its bounding box.
 #[derive(Clone, Copy, Debug)]
@@ -34,6 +40,8 @@ pub(crate) struct PruneScratch {
     /// Grid scan: where each cell's entries start, and the entries (edge indices).
     start: Vec<u32>,
     entries: Vec<u32>,
+    /// [`mark_crossed`]: start nodes of the crossing edges found.
+    flagged: Vec<NodeId>,
 }
 
 /// Up to this many edges, sorting the boxes is cheaper than a grid.
@@ -48,9 +56,45 @@ pub(crate) fn edges_apart(
     scratch: &mut PruneScratch,
     nodes: &mut Vec<NodeId>,
 ) -> bool {
-    let boxes = &mut scratch.boxes;
+    collect_boxes(pool, starts, &mut scratch.boxes, Some(nodes));
+    scan(scratch, BUDGET_PER_EDGE, |e, f| meet(pool, e, f)) == Scan::Done
+}
+
+/// Lenient mode: flags every edge (by its start node) of the rings through `starts` that
+/// properly crosses another, exactly as `validate::mark_crossed` does, but comparing only
+/// edges whose boxes overlap. Returns false, with some of the flags set, when the budget ran
+/// out first; the caller must then finish the job another way.
+pub(crate) fn mark_crossed(pool: &mut Pool, starts: &[NodeId], scratch: &mut PruneScratch) -> bool {
+    collect_boxes(pool, starts, &mut scratch.boxes, None);
+    let mut flagged = core::mem::take(&mut scratch.flagged);
+    flagged.clear();
+    let done = scan(scratch, CROSSED_BUDGET_PER_EDGE, |e, f| {
+        let (a, b, c, d) = (pool.p(e.from), pool.p(e.to), pool.p(f.from), pool.p(f.to));
+        if crate::clip::crosses(a, b, c, d) {
+            flagged.push(e.from);
+            flagged.push(f.from);
+        }
+        false
+    }) == Scan::Done;
+    for &n in &flagged {
+        pool.get_mut(n).crossed = true;
+    }
+    scratch.flagged = flagged;
+    done
+}
+
+/// Fills `boxes` with the edges of the rings through `starts`, and `nodes` (if given) with
+/// their start nodes.
+fn collect_boxes(
+    pool: &Pool,
+    starts: &[NodeId],
+    boxes: &mut Vec<EdgeBox>,
+    mut nodes: Option<&mut Vec<NodeId>>,
+) {
     boxes.clear();
-    nodes.clear();
+    if let Some(nodes) = nodes.as_deref_mut() {
+        nodes.clear();
+    }
     for &start in starts {
         if start.idx() >= pool.len() {
             continue;
@@ -60,7 +104,9 @@ pub(crate) fn edges_apart(
         for _ in 0..pool.len() {
             let next = pool.next(n);
             let (a, b) = (pool.p(n), pool.p(next));
-            nodes.push(n);
+            if let Some(nodes) = nodes.as_deref_mut() {
+                nodes.push(n);
+            }
             boxes.push(EdgeBox {
                 x0: a.x.min(b.x),
                 x1: a.x.max(b.x),
@@ -75,44 +121,73 @@ pub(crate) fn edges_apart(
             }
         }
     }
-    if boxes.len() <= SMALL {
-        scan_sorted(pool, boxes)
+}
+
+/// How a scan over the pairs of edges with overlapping boxes ended.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Scan {
+    /// Every such pair was visited (some possibly twice).
+    Done,
+    /// The visitor asked to stop.
+    Stopped,
+    /// The budget ran out.
+    OutOfBudget,
+}
+
+/// Visits the pairs of `scratch.boxes` whose boxes overlap until `visit` returns true,
+/// allowing `per_edge` box comparisons (and cell listings) per edge.
+fn scan(
+    scratch: &mut PruneScratch,
+    per_edge: usize,
+    visit: impl FnMut(&EdgeBox, &EdgeBox) -> bool,
+) -> Scan {
+    let budget = per_edge * scratch.boxes.len() + 64;
+    if scratch.boxes.len() <= SMALL {
+        scan_sorted(&mut scratch.boxes, budget, visit)
     } else {
-        scan_grid(pool, scratch)
+        scan_grid(scratch, budget, visit)
     }
 }
 
 /// A few edges: sort the boxes by their left sides and compare each with the boxes that
 /// start before it ends.
-fn scan_sorted(pool: &Pool, boxes: &mut [EdgeBox]) -> bool {
+fn scan_sorted(
+    boxes: &mut [EdgeBox],
+    mut budget: usize,
+    mut visit: impl FnMut(&EdgeBox, &EdgeBox) -> bool,
+) -> Scan {
     // coordinates are finite here (load dropped or refused the others)
     boxes.sort_unstable_by(|s, t| s.x0.total_cmp(&t.x0));
-    let mut budget = BUDGET_PER_EDGE * boxes.len() + 64;
     for (i, e) in boxes.iter().enumerate() {
         for f in &boxes[i + 1..] {
             if f.x0 > e.x1 {
                 break;
             }
             if budget == 0 {
-                return false;
+                return Scan::OutOfBudget;
             }
             budget -= 1;
-            if f.y0 <= e.y1 && e.y0 <= f.y1 && meet(pool, e, f) {
-                return false;
+            if f.y0 <= e.y1 && e.y0 <= f.y1 && visit(e, f) {
+                return Scan::Stopped;
             }
         }
     }
-    true
+    Scan::Done
 }
 
 /// Many edges: list each in the cells of a uniform grid its box covers (about two edges
 /// per cell) and compare the edges sharing a cell. Two edges whose boxes overlap share
 /// the cell of a point of the overlap, since cells are monotone in x and y.
-fn scan_grid(pool: &Pool, scratch: &mut PruneScratch) -> bool {
+fn scan_grid(
+    scratch: &mut PruneScratch,
+    mut budget: usize,
+    mut visit: impl FnMut(&EdgeBox, &EdgeBox) -> bool,
+) -> Scan {
     let PruneScratch {
         boxes,
         start,
         entries,
+        ..
     } = scratch;
     let (mut x0, mut y0, mut x1, mut y1) = (f64::MAX, f64::MAX, f64::MIN, f64::MIN);
     for b in boxes.iter() {
@@ -126,14 +201,13 @@ fn scan_grid(pool: &Pool, scratch: &mut PruneScratch) -> bool {
     let row = |y: f64| (((y - y0) * sy) as usize).min(ny - 1);
     let cells_of = |b: &EdgeBox| (column(b.x0), column(b.x1), row(b.y0), row(b.y1));
     // counting sort of (cell, edge) entries; give up when long edges would list too many
-    let mut budget = BUDGET_PER_EDGE * boxes.len() + 64;
     start.clear();
     start.resize(nx * ny + 2, 0);
     for b in boxes.iter() {
         let (c0, c1, r0, r1) = cells_of(b);
         let listed = (c1 - c0 + 1) * (r1 - r0 + 1);
         if listed > budget {
-            return false;
+            return Scan::OutOfBudget;
         }
         budget -= listed;
         for r in r0..=r1 {
@@ -164,18 +238,18 @@ fn scan_grid(pool: &Pool, scratch: &mut PruneScratch) -> bool {
             let e = &boxes[i as usize];
             for &j in &cell[k + 1..] {
                 if budget == 0 {
-                    return false;
+                    return Scan::OutOfBudget;
                 }
                 budget -= 1;
                 let f = &boxes[j as usize];
                 let overlap = f.x0 <= e.x1 && e.x0 <= f.x1 && f.y0 <= e.y1 && e.y0 <= f.y1;
-                if overlap && meet(pool, e, f) {
-                    return false;
+                if overlap && visit(e, f) {
+                    return Scan::Stopped;
                 }
             }
         }
     }
-    true
+    Scan::Done
 }
 
 /// Whether edges `e` and `f`, whose boxes overlap, meet other than adjacent edges at their
@@ -274,6 +348,82 @@ mod tests {
         };
         assert!(apart(&[&circle(10.0, 0.0), &circle(5.0, 0.0)]));
         assert!(!apart(&[&circle(10.0, 0.0), &circle(5.0, 5.0)]));
+    }
+
+    /// Runs `mark_crossed` and checks its flags against every pair compared directly: the
+    /// same flags when it finished, a subset when it gave up. Returns whether it finished.
+    fn marks_like_brute_force(rings: &[&[(f64, f64)]]) -> bool {
+        let (mut pool, starts) = build(rings);
+        let done = mark_crossed(&mut pool, &starts, &mut PruneScratch::default());
+        let edges: Vec<NodeId> = (0..pool.len() as u32).map(NodeId).collect();
+        for &e in &edges {
+            let (a, b) = (pool.p(e), pool.p(pool.next(e)));
+            let crossed = edges.iter().any(|&f| {
+                let (c, d) = (pool.p(f), pool.p(pool.next(f)));
+                crate::clip::crosses(a, b, c, d)
+            });
+            let flagged = pool.get(e).crossed;
+            assert!(crossed || !flagged, "edge {e:?} flagged without a crossing");
+            assert!(!done || crossed == flagged, "edge {e:?}: crossed {crossed}");
+        }
+        done
+    }
+
+    #[test]
+    fn crossing_edges_are_flagged() {
+        assert!(marks_like_brute_force(&[&[
+            (0., 0.),
+            (10., 10.),
+            (10., 0.),
+            (0., 10.)
+        ]]));
+        assert!(marks_like_brute_force(&[
+            SQUARE,
+            &[(5., 5.), (15., 5.), (15., 6.)]
+        ]));
+        // touching is not crossing
+        assert!(marks_like_brute_force(&[
+            SQUARE,
+            &[(0., 5.), (3., 7.), (3., 3.)]
+        ]));
+        // seeded pseudo-random rings, few and many edges (the sorted scan and the grid)
+        let mut seed = 0x2545_f491_4f6c_dd1d_u64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 40) as f64 / f64::from(1u32 << 24) * 100.0
+        };
+        // two 400-gons crossing each other: the grid finishes
+        let circle = |r: f64, dx: f64| -> Vec<(f64, f64)> {
+            (0..400)
+                .map(|k| {
+                    let t = f64::from(k) * core::f64::consts::TAU / 400.0;
+                    (dx + r * t.cos(), r * t.sin())
+                })
+                .collect()
+        };
+        assert!(marks_like_brute_force(&[
+            &circle(10.0, 0.0),
+            &circle(5.0, 8.0)
+        ]));
+        for len in [6, 40, 300, 700] {
+            let ring: Vec<(f64, f64)> = (0..len).map(|_| (next(), next() * 0.05)).collect();
+            marks_like_brute_force(&[&ring]);
+        }
+    }
+
+    #[test]
+    fn a_star_of_long_crossing_edges_gives_up_without_false_flags() {
+        // {601/300}: every edge crosses almost every other one, far beyond the budget
+        let n = 601;
+        let ring: Vec<(f64, f64)> = (0..n)
+            .map(|k| {
+                let t = f64::from(k * 300 % n) * core::f64::consts::TAU / f64::from(n);
+                (t.cos(), t.sin())
+            })
+            .collect();
+        assert!(!marks_like_brute_force(&[&ring]));
     }
 
     #[test]

@@ -113,7 +113,8 @@ impl Context {
     }
 }
 
-/// The whole pipeline once; returns the numbers of polygons and holes.
+/// The whole pipeline once; returns the numbers of polygons and holes. `None` when asked
+/// to `untwist` and there was no bow tie to untwist: the run would repeat the last one.
 fn run<T: Coord>(
     cx: &mut Context,
     vertices: &[[T; 2]],
@@ -121,11 +122,13 @@ fn run<T: Coord>(
     options: &Options,
     untwist: bool,
     out: &mut Vec<[u32; 3]>,
-) -> Result<(usize, usize), Error> {
+) -> Result<Option<(usize, usize)>, Error> {
     out.clear();
     cx.reset(options.lenient);
     load::load(cx, vertices, ring_starts)?;
-    clean::clean(cx, untwist)?;
+    if !clean::clean(cx, untwist)? {
+        return Ok(None);
+    }
     nest::nest(cx, options.nesting)?;
     if cx.lenient && !cx.crossings.is_empty() {
         cx.area = signed_area(cx);
@@ -135,9 +138,13 @@ fn run<T: Coord>(
         cx.starts.clear();
         cx.starts
             .extend(cx.rings.iter().filter(|r| r.alive).map(|r| r.start));
-        // the grid of the edges as they are now (bridge builds its own afterwards)
-        nest::index_all_edges(cx);
-        validate::mark_crossed(&mut cx.pool, &cx.edge_grid, &cx.starts, &mut cx.edges);
+        // comparing the edges whose boxes overlap usually suffices; where that gives up
+        // (many long edges over each other), the grid of the edges as they are now (bridge
+        // builds its own afterwards) finds the rest
+        if !crate::prune::mark_crossed(&mut cx.pool, &cx.starts, &mut cx.prune) {
+            nest::index_all_edges(cx);
+            validate::mark_crossed(&mut cx.pool, &cx.edge_grid, &cx.starts, &mut cx.edges);
+        }
     }
     bridge::bridge(cx)?;
     let polygons = if cx.lenient && !cx.crossings.is_empty() {
@@ -145,7 +152,7 @@ fn run<T: Coord>(
     } else {
         clip::clip(cx, options.strategy, false, out)?
     };
-    Ok((polygons, holes))
+    Ok(Some((polygons, holes)))
 }
 
 /// Lenient mode, input with crossing edges: no triangulation covers it exactly, so clip
@@ -293,7 +300,9 @@ impl<T: Coord> Triangulator<T> {
         out: &mut Vec<[u32; 3]>,
     ) -> Result<Report<'_>, Error> {
         let cx = &mut self.cx;
-        let (mut polygons, mut holes) = run(cx, vertices, ring_starts, options, false, out)?;
+        // without `untwist` the pipeline always runs to the end
+        let (mut polygons, mut holes) = run(cx, vertices, ring_starts, options, false, out)?
+            .ok_or(Error::Internal { stage: "clean" })?;
         if cx.lenient && !cx.crossings.is_empty() {
             // Crossing edges have no exact triangulation: try again with bow ties
             // uncrossed, keep whichever covers the input's area more closely.
@@ -305,7 +314,7 @@ impl<T: Coord> Triangulator<T> {
             let mut alt = core::mem::take(&mut cx.alt_untwisted);
             let second = run(cx, vertices, ring_starts, options, true, &mut alt);
             match second {
-                Ok(counts) if deviation(cx.area, vertices, &alt) < first => {
+                Ok(Some(counts)) if deviation(cx.area, vertices, &alt) < first => {
                     (polygons, holes) = counts;
                     // copy, not swap: the caller's buffer keeps its capacity
                     out.clear();

@@ -43,6 +43,10 @@ pub(crate) struct Crossing {
 #[derive(Debug, Default)]
 pub(crate) struct SweepScratch {
     pub order: Vec<NodeId>,
+    /// Set by the caller when `order` already holds the nodes of the rings to sweep, sorted
+    /// (the same nodes at the same positions as the last sweep, only linked differently):
+    /// the next sweep skips collecting and sorting them, and clears the flag.
+    pub order_is_sorted: bool,
     /// `order` with its sort keys while it is sorted (see [`sort_key`]).
     keyed: Vec<(i64, i64, NodeId)>,
     /// The edges crossing the sweep line, bottom to top.
@@ -72,21 +76,24 @@ pub(crate) fn sweep(
 ) {
     let SweepScratch {
         order,
+        order_is_sorted,
         keyed,
         status,
         run,
     } = scratch;
-    collect_nodes(pool, starts, order);
-    // Sorted by [`key_cmp`], then ids: the keys sit beside the ids, so the sort compares
-    // integers instead of looking every node up in the pool.
-    keyed.clear();
-    keyed.extend(order.iter().map(|&n| {
-        let p = pool.p(n);
-        (sort_key(p.x), sort_key(p.y), n)
-    }));
-    keyed.sort_unstable();
-    order.clear();
-    order.extend(keyed.iter().map(|k| k.2));
+    if !core::mem::take(order_is_sorted) {
+        collect_nodes(pool, starts, order);
+        // Sorted by [`key_cmp`], then ids: the keys sit beside the ids, so the sort compares
+        // integers instead of looking every node up in the pool.
+        keyed.clear();
+        keyed.extend(order.iter().map(|&n| {
+            let p = pool.p(n);
+            (sort_key(p.x), sort_key(p.y), n)
+        }));
+        keyed.sort_unstable();
+        order.clear();
+        order.extend(keyed.iter().map(|k| k.2));
+    }
     status.clear();
     run.clear();
     // There are at most as many edges as nodes: reserving that much up front means a

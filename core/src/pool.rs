@@ -220,6 +220,25 @@ impl Iterator for RingIter<'_> {
 }
 
 #[cfg(test)]
+impl Pool {
+    /// A pool holding the rings of (x, y), each linked into a cycle, and one start node
+    /// per ring (for unit tests of the stages).
+    pub(crate) fn from_rings<R: AsRef<[(f64, f64)]>>(rings: &[R]) -> (Pool, Vec<NodeId>) {
+        let mut pool = Pool::default();
+        let mut starts = Vec::new();
+        for (r, ring) in rings.iter().enumerate() {
+            let first = pool.len() as u32;
+            for (i, &(x, y)) in ring.as_ref().iter().enumerate() {
+                pool.push(Point::new(x, y), i as u32, r as u32);
+            }
+            pool.link_run(first, ring.as_ref().len() as u32);
+            starts.push(NodeId(first));
+        }
+        (pool, starts)
+    }
+}
+
+#[cfg(test)]
 mod tests {
     use super::*;
 

@@ -496,17 +496,7 @@ mod tests {
 
     /// Builds a pool from rings of (x, y) and returns it with one start node per ring.
     fn build(rings: &[Vec<(f64, f64)>]) -> (Pool, Vec<NodeId>) {
-        let mut pool = Pool::default();
-        let mut starts = Vec::new();
-        for (r, ring) in rings.iter().enumerate() {
-            let first = pool.len() as u32;
-            for (i, &(x, y)) in ring.iter().enumerate() {
-                pool.push(Point::new(x, y), i as u32, r as u32);
-            }
-            pool.link_run(first, ring.len() as u32);
-            starts.push(NodeId(first));
-        }
-        (pool, starts)
+        Pool::from_rings(rings)
     }
 
     /// The result of one sweep: touches sorted, crossings as found, and the node order.

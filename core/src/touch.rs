@@ -111,8 +111,9 @@ fn relink(cx: &mut Context, i: usize, j: usize) {
 /// Fills `cx.relink`; false when the edges around X cannot alternate (invalid input).
 fn relink_bundles(cx: &mut Context, i: usize, j: usize, crack: bool) -> bool {
     let o = cx.pool.p(cx.shared[i]);
-    // (far end, node arriving at X or target leaving X, arrives)
-    let mut ends: Vec<(Point, NodeId, bool)> = Vec::with_capacity(2 * (j - i));
+    // (far end, node arriving at X or target leaving X, arrives), counter-clockwise
+    let mut ends = core::mem::take(&mut cx.touch_ends);
+    ends.clear();
     for &n in &cx.shared[i..j] {
         if live(cx, n) {
             let (prev, next) = (cx.pool.prev(n), cx.pool.next(n));
@@ -121,60 +122,75 @@ fn relink_bundles(cx: &mut Context, i: usize, j: usize, crack: bool) -> bool {
         }
     }
     ends.sort_by(|a, b| cmp_around(o, a.0, b.0));
-    // bundles of one direction, as ranges of `ends`
-    let mut bundles = Vec::new();
+    // Where every bundle is doubled both starts alternate: arriving first makes cracks,
+    // leaving first walls. Elsewhere the bundles that are not doubled decide.
+    let paired = [crack, !crack].into_iter().any(|first_arrives| {
+        cx.relink.clear();
+        pair_alternating(o, &ends, first_arrives, &mut cx.relink)
+    });
+    cx.touch_ends = ends;
+    paired
+}
+
+/// Arranges each bundle of `ends` (sorted counter-clockwise around `o`) so that arriving
+/// and leaving edges alternate, the first one arriving or not as `first_arrives` says, and
+/// pairs each arriving edge with the leaving edge just clockwise of it (the one before it
+/// in that order). False when they cannot alternate so.
+fn pair_alternating(
+    o: Point,
+    ends: &[(Point, NodeId, bool)],
+    first_arrives: bool,
+    pairs: &mut Vec<(NodeId, NodeId)>,
+) -> bool {
+    let mut expect = first_arrives;
+    let mut last_out: Option<NodeId> = None;
+    // an arriving edge placed first waits for the last leaving one (the order is cyclic)
+    let mut first_in: Option<NodeId> = None;
     let mut k = 0;
     while k < ends.len() {
         let mut e = k + 1;
         while e < ends.len() && cmp_around(o, ends[k].0, ends[e].0) == Ordering::Equal {
             e += 1;
         }
-        bundles.push(k..e);
+        let bundle = &ends[k..e];
+        let ins = bundle.iter().filter(|x| x.2).count();
+        let outs = bundle.len() - ins;
+        let (want, other) = if expect { (ins, outs) } else { (outs, ins) };
+        if want != other && want != other + 1 {
+            return false;
+        }
+        // the expected kind first, then alternately
+        let mut arriving = bundle.iter().filter(|x| x.2);
+        let mut leaving = bundle.iter().filter(|x| !x.2);
+        for step in 0..bundle.len() {
+            if (step % 2 == 0) == expect {
+                let Some(&(_, n, _)) = arriving.next() else {
+                    return false;
+                };
+                match last_out {
+                    Some(target) => pairs.push((n, target)),
+                    None => first_in = Some(n),
+                }
+            } else {
+                let Some(&(_, target, _)) = leaving.next() else {
+                    return false;
+                };
+                last_out = Some(target);
+            }
+        }
+        if want > other {
+            expect = !expect;
+        }
         k = e;
     }
-    // Where every bundle is doubled both starts alternate: arriving first makes cracks,
-    // leaving first walls. Elsewhere the bundles that are not doubled decide.
-    for first_arrives in [crack, !crack] {
-        // arrange each bundle to alternate, starting with what the sequence expects
-        let mut expect = first_arrives;
-        let mut ordered: Vec<&(Point, NodeId, bool)> = Vec::with_capacity(ends.len());
-        let mut ok = true;
-        for range in &bundles {
-            let bundle = &ends[range.clone()];
-            let ins = bundle.iter().filter(|e| e.2).count();
-            let outs = bundle.len() - ins;
-            let (want, other) = if expect { (ins, outs) } else { (outs, ins) };
-            if want != other && want != other + 1 {
-                ok = false;
-                break;
-            }
-            let mut wanted = bundle.iter().filter(|e| e.2 == expect);
-            let mut others = bundle.iter().filter(|e| e.2 != expect);
-            for _ in 0..other {
-                ordered.extend(wanted.next());
-                ordered.extend(others.next());
-            }
-            if want > other {
-                ordered.extend(wanted.next());
-                expect = !expect;
-            }
-        }
-        if !ok || expect != first_arrives {
-            continue;
-        }
-        // in counter-clockwise order the leaving edge just clockwise of an arriving one is
-        // the one before it
-        cx.relink.clear();
-        for k in 0..ordered.len() {
-            let (_, n, arrives) = *ordered[k];
-            if arrives {
-                let (_, target, _) = *ordered[(k + ordered.len() - 1) % ordered.len()];
-                cx.relink.push((n, target));
-            }
-        }
-        return true;
+    if expect != first_arrives {
+        return false;
     }
-    false
+    if let Some(n) = first_in {
+        let Some(target) = last_out else { return false };
+        pairs.push((n, target));
+    }
+    true
 }
 
 /// Whether some edge at the position of `cx.shared[i..j]` arrives from where another one
@@ -219,32 +235,36 @@ fn all_doubled(cx: &Context, i: usize, j: usize) -> bool {
 /// into it rather than a wall between two parts of the outside — read at `y`, where an
 /// edge that is not doubled says which sectors are inside. `None` when every edge at `y`
 /// is doubled too.
-fn crack_at(cx: &Context, y_node: NodeId, x: Point) -> Option<bool> {
+fn crack_at(cx: &Context, y_node: NodeId, x: Point, nets: &mut Vec<(Point, i32)>) -> Option<bool> {
     let y = cx.pool.p(y_node);
     let shared = &cx.shared;
     let from = shared.partition_point(|&n| cmp_xy(cx.pool.p(n), y) == Ordering::Less);
     let to = shared.partition_point(|&n| cmp_xy(cx.pool.p(n), y) != Ordering::Greater);
     let nodes = &shared[from..to];
     // (far end, +1 arriving / -1 leaving), counter-clockwise around y
-    let mut ends: Vec<(Point, i32)> = Vec::new();
+    nets.clear();
     let mut add = |n: NodeId| {
-        ends.push((cx.pool.p(cx.pool.prev(n)), 1));
-        ends.push((cx.pool.p(cx.pool.next(n)), -1));
+        nets.push((cx.pool.p(cx.pool.prev(n)), 1));
+        nets.push((cx.pool.p(cx.pool.next(n)), -1));
     };
     if nodes.is_empty() {
         add(y_node); // y is visited once
     } else {
         nodes.iter().filter(|&&n| live(cx, n)).for_each(|&n| add(n));
     }
-    ends.sort_by(|a, b| cmp_around(y, a.0, b.0));
-    // net count per direction, in order
-    let mut bundles: Vec<(Point, i32)> = Vec::new();
-    for (p, d) in ends {
-        match bundles.last_mut() {
-            Some(b) if cmp_around(y, b.0, p) == Ordering::Equal => b.1 += d,
-            _ => bundles.push((p, d)),
+    nets.sort_by(|a, b| cmp_around(y, a.0, b.0));
+    // net count per direction, in order, merged in place
+    let mut m = 0;
+    for k in 0..nets.len() {
+        if m > 0 && cmp_around(y, nets[m - 1].0, nets[k].0) == Ordering::Equal {
+            nets[m - 1].1 += nets[k].1;
+        } else {
+            nets[m] = nets[k];
+            m += 1;
         }
     }
+    nets.truncate(m);
+    let bundles = &nets[..];
     // just counter-clockwise of an arriving edge lies the outside, of a leaving one the
     // inside; doubled bundles change nothing
     let last = bundles.iter().rposition(|b| b.1 != 0)?;
@@ -262,13 +282,16 @@ fn crack_at(cx: &Context, y_node: NodeId, x: Point) -> Option<bool> {
 /// Whether the doubled edges through the position of `cx.shared[i..j]` are cracks into the
 /// region (its inside on both sides) rather than walls, as read at their far ends; walls
 /// when no far end tells.
-fn is_crack(cx: &Context, i: usize, j: usize) -> bool {
+fn is_crack(cx: &mut Context, i: usize, j: usize) -> bool {
     let x = cx.pool.p(cx.shared[i]);
-    cx.shared[i..j]
+    let mut nets = core::mem::take(&mut cx.touch_nets);
+    let crack = cx.shared[i..j]
         .iter()
         .filter(|&&n| live(cx, n))
-        .find_map(|&n| crack_at(cx, cx.pool.prev(n), x))
-        .unwrap_or(false)
+        .find_map(|&n| crack_at(cx, cx.pool.prev(n), x, &mut nets))
+        .unwrap_or(false);
+    cx.touch_nets = nets;
+    crack
 }
 
 /// Rotating clockwise around `o` from the direction towards `back`: whether the direction

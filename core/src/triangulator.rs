@@ -81,6 +81,8 @@ pub(crate) struct Context {
     pub shared: Vec<NodeId>,
     /// Scratch of `touch`: the new successor of each node of one shared position.
     pub relink: Vec<(NodeId, NodeId)>,
+    pub touch_ends: Vec<(crate::predicates::Point, NodeId, bool)>,
+    pub touch_nets: Vec<(crate::predicates::Point, i32)>,
     pub crossings: Vec<validate::Crossing>,
     pub sweep: SweepScratch,
     pub prune: crate::prune::PruneScratch,

@@ -69,8 +69,23 @@ fn eliminate_hole(cx: &mut Context, hole: usize) -> Result<(), Error> {
     let target = match find_touching(cx, m) {
         Some(x) => Target::Touching(x),
         None => match find_bridge(cx, m) {
+            Some(x) if cx.lenient && bridge_leaves_polygon(cx, m, x) => {
+                // M pokes into a hole bridged before (their edges cross): the bridge runs
+                // inside that hole, or out of it across its boundary, and turns the hole
+                // inside out. The careful run bridges from a vertex of the hole that sees
+                // its target properly; the others keep the ray's choice (see `triangulate`).
+                cx.bridge_left = true;
+                let careful = cx.careful_bridges;
+                match bridge_from_elsewhere(cx, m, true).filter(|_| careful) {
+                    Some((other, x)) => {
+                        m = other;
+                        Target::Visible(x)
+                    }
+                    None => Target::Visible(x),
+                }
+            }
             Some(x) => Target::Visible(x),
-            None if cx.lenient => match bridge_from_elsewhere(cx, m) {
+            None if cx.lenient => match bridge_from_elsewhere(cx, m, false) {
                 Some((other, x)) => {
                     m = other;
                     Target::Visible(x)
@@ -124,12 +139,22 @@ fn eliminate_hole(cx: &mut Context, hole: usize) -> Result<(), Error> {
 }
 
 /// Lenient mode: the ray from the hole's rightmost vertex hits nothing (the hole sticks
-/// out of its polygon, say). Tries the hole's other vertices, keeping a bridge that crosses
-/// none of the hole's own edges; returns the hole vertex and its target.
-fn bridge_from_elsewhere(cx: &Context, m: NodeId) -> Option<(NodeId, NodeId)> {
+/// out of its polygon, say), or, with `clear_of_merged`, its bridge would cross a merged
+/// edge. Tries the hole's other vertices, keeping a bridge that crosses none of the hole's
+/// own edges (nor, with `clear_of_merged`, a merged one); returns the hole vertex and its
+/// target.
+fn bridge_from_elsewhere(
+    cx: &Context,
+    m: NodeId,
+    clear_of_merged: bool,
+) -> Option<(NodeId, NodeId)> {
     let mut v = cx.pool.next(m);
     while v != m {
         if let Some(x) = find_bridge(cx, v) {
+            if clear_of_merged && bridge_leaves_polygon(cx, v, x) {
+                v = cx.pool.next(v);
+                continue;
+            }
             let (pv, px) = (cx.pool.p(v), cx.pool.p(x));
             let mut e = cx.pool.next(v);
             let mut clear = true;
@@ -148,6 +173,26 @@ fn bridge_from_elsewhere(cx: &Context, m: NodeId) -> Option<(NodeId, NodeId)> {
         v = cx.pool.next(v);
     }
     None
+}
+
+/// Lenient mode, crossing input: whether the bridge from hole vertex `m` to merged node
+/// `x` leaves the polygon: `x`'s corner does not hold M, or the bridge crosses an edge of
+/// a merged ring. Only asked where `m`'s own edges cross another edge: elsewhere the ray's
+/// nearest hit leaves nothing between M and its target.
+fn bridge_leaves_polygon(cx: &Context, m: NodeId, x: NodeId) -> bool {
+    let pool = &cx.pool;
+    if !(pool.get(m).crossed || pool.get(pool.prev(m)).crossed) {
+        return false;
+    }
+    let (pm, px) = (pool.p(m), pool.p(x));
+    if corner_contains(px, pool.p(pool.next(x)), pool.p(pool.prev(x)), pm) == Some(false) {
+        return true;
+    }
+    let lo = Point::new(pm.x.min(px.x), pm.y.min(px.y));
+    let hi = Point::new(pm.x.max(px.x), pm.y.max(px.y));
+    cx.edge_grid
+        .query(lo, hi)
+        .any(|e| is_merged(cx, e) && crate::clip::crosses(pm, px, pool.p(e), pool.p(pool.next(e))))
 }
 
 /// How a hole connects.

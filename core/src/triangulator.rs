@@ -68,6 +68,11 @@ pub(crate) struct Context {
     pub dropped: Vec<Dropped>,
     pub repairs: Vec<Repair>,
     pub lenient: bool,
+    /// Lenient mode: bridge holes whose rightmost vertex pokes into another hole from
+    /// elsewhere (see `bridge`); set for one extra run only.
+    pub careful_bridges: bool,
+    /// Lenient mode: some bridge of this run left the polygon (the careful run may help).
+    pub bridge_left: bool,
     /// Scratch: ring order for bridging, ring start nodes for the sweep.
     pub order: Vec<u32>,
     pub starts: Vec<NodeId>,
@@ -107,6 +112,7 @@ impl Context {
         self.dropped.clear();
         self.repairs.clear();
         self.lenient = lenient;
+        self.bridge_left = false;
     }
 
     /// Records a lenient-mode repair.
@@ -117,6 +123,7 @@ impl Context {
 
 /// The whole pipeline once; returns the numbers of polygons and holes. `None` when asked
 /// to `untwist` and there was no bow tie to untwist: the run would repeat the last one.
+/// Bridges are chosen carefully when `cx.careful_bridges` says so.
 fn run<T: Coord>(
     cx: &mut Context,
     vertices: &[[T; 2]],
@@ -302,33 +309,52 @@ impl<T: Coord> Triangulator<T> {
         out: &mut Vec<[u32; 3]>,
     ) -> Result<Report<'_>, Error> {
         let cx = &mut self.cx;
+        cx.careful_bridges = false;
         // without `untwist` the pipeline always runs to the end
         let (mut polygons, mut holes) = run(cx, vertices, ring_starts, options, false, out)?
             .ok_or(Error::Internal { stage: "clean" })?;
         if cx.lenient && !cx.crossings.is_empty() {
             // Crossing edges have no exact triangulation: try again with bow ties
-            // uncrossed, keep whichever covers the input's area more closely.
-            let first = deviation(cx.area, vertices, out);
+            // uncrossed, and where a bridge left the polygon, with bridges chosen
+            // carefully; keep whichever covers the input's area most closely.
+            let mut best = deviation(cx.area, vertices, out);
+            let mut bridge_left = cx.bridge_left;
             cx.first_dropped.clear();
             cx.first_dropped.extend_from_slice(&cx.dropped);
             cx.first_repairs.clear();
             cx.first_repairs.extend_from_slice(&cx.repairs);
             let mut alt = core::mem::take(&mut cx.alt_untwisted);
-            let second = run(cx, vertices, ring_starts, options, true, &mut alt);
-            match second {
-                Ok(Some(counts)) if deviation(cx.area, vertices, &alt) < first => {
-                    (polygons, holes) = counts;
-                    // copy, not swap: the caller's buffer keeps its capacity
-                    out.clear();
-                    out.extend_from_slice(&alt);
+            for untwist in [true, false] {
+                if !untwist {
+                    if !bridge_left {
+                        break;
+                    }
+                    // Careful bridges, bow ties as given: which of the two kinds of run
+                    // goes better with them varies, and one more run is enough here.
+                    cx.careful_bridges = true;
                 }
-                _ => {
-                    cx.dropped.clear();
-                    cx.dropped.extend_from_slice(&cx.first_dropped);
-                    cx.repairs.clear();
-                    cx.repairs.extend_from_slice(&cx.first_repairs);
+                let next = run(cx, vertices, ring_starts, options, untwist, &mut alt);
+                bridge_left |= cx.bridge_left;
+                cx.careful_bridges = false;
+                match next {
+                    Ok(Some(counts)) if deviation(cx.area, vertices, &alt) < best => {
+                        best = deviation(cx.area, vertices, &alt);
+                        (polygons, holes) = counts;
+                        // copy, not swap: the caller's buffer keeps its capacity
+                        out.clear();
+                        out.extend_from_slice(&alt);
+                        cx.first_dropped.clear();
+                        cx.first_dropped.extend_from_slice(&cx.dropped);
+                        cx.first_repairs.clear();
+                        cx.first_repairs.extend_from_slice(&cx.repairs);
+                    }
+                    _ => {}
                 }
             }
+            cx.dropped.clear();
+            cx.dropped.extend_from_slice(&cx.first_dropped);
+            cx.repairs.clear();
+            cx.repairs.extend_from_slice(&cx.first_repairs);
             cx.alt_untwisted = alt;
         }
         Ok(Report {

@@ -295,6 +295,16 @@ mod tests {
         Pool::from_rings(rings)
     }
 
+    /// A regular `n`-gon of radius `r` centred at (`dx`, 0), counter-clockwise.
+    fn circle(n: u32, r: f64, dx: f64) -> Vec<(f64, f64)> {
+        (0..n)
+            .map(|k| {
+                let t = f64::from(k) * core::f64::consts::TAU / f64::from(n);
+                (dx + r * t.cos(), r * t.sin())
+            })
+            .collect()
+    }
+
     fn apart(rings: &[&[(f64, f64)]]) -> bool {
         let (pool, starts) = build(rings);
         let mut nodes = Vec::new();
@@ -328,16 +338,8 @@ mod tests {
     #[test]
     fn many_edges_take_the_grid() {
         // a 64-gon with a 64-gon hole, and the same hole moved onto the outer ring
-        let circle = |r: f64, dx: f64| -> Vec<(f64, f64)> {
-            (0..64)
-                .map(|k| {
-                    let t = f64::from(k) * core::f64::consts::TAU / 64.0;
-                    (dx + r * t.cos(), r * t.sin())
-                })
-                .collect()
-        };
-        assert!(apart(&[&circle(10.0, 0.0), &circle(5.0, 0.0)]));
-        assert!(!apart(&[&circle(10.0, 0.0), &circle(5.0, 5.0)]));
+        assert!(apart(&[&circle(64, 10.0, 0.0), &circle(64, 5.0, 0.0)]));
+        assert!(!apart(&[&circle(64, 10.0, 0.0), &circle(64, 5.0, 5.0)]));
     }
 
     /// Runs `mark_crossed` and checks its flags against every pair compared directly: the
@@ -385,17 +387,9 @@ mod tests {
             (seed >> 40) as f64 / f64::from(1u32 << 24) * 100.0
         };
         // two 400-gons crossing each other: the grid finishes
-        let circle = |r: f64, dx: f64| -> Vec<(f64, f64)> {
-            (0..400)
-                .map(|k| {
-                    let t = f64::from(k) * core::f64::consts::TAU / 400.0;
-                    (dx + r * t.cos(), r * t.sin())
-                })
-                .collect()
-        };
         assert!(marks_like_brute_force(&[
-            &circle(10.0, 0.0),
-            &circle(5.0, 8.0)
+            &circle(400, 10.0, 0.0),
+            &circle(400, 5.0, 8.0)
         ]));
         for len in [6, 40, 300, 700] {
             let ring: Vec<(f64, f64)> = (0..len).map(|_| (next(), next() * 0.05)).collect();

@@ -85,9 +85,7 @@ fn relink(cx: &mut Context, i: usize, j: usize) {
     if !cx.lenient && (conflict || any_doubled(cx, i, j)) {
         // Edges of one direction need ordering: the rule above sends an edge straight
         // back first, which closes a wall, but a crack into the region is walked along.
-        // Where every edge is doubled only the far ends can tell which it is.
-        let crack = !all_doubled(cx, i, j) || is_crack(cx, i, j);
-        if !relink_bundles(cx, i, j, crack) {
+        if !relink_bundles(cx, i, j) {
             return;
         }
     } else if conflict {
@@ -109,7 +107,7 @@ fn relink(cx: &mut Context, i: usize, j: usize) {
 /// is free, and the sequence must alternate across bundles. With the sequence fixed, each
 /// arriving edge continues along the leaving edge just clockwise of it, as the rule says.
 /// Fills `cx.relink`; false when the edges around X cannot alternate (invalid input).
-fn relink_bundles(cx: &mut Context, i: usize, j: usize, crack: bool) -> bool {
+fn relink_bundles(cx: &mut Context, i: usize, j: usize) -> bool {
     let o = cx.pool.p(cx.shared[i]);
     // (far end, node arriving at X or target leaving X, arrives), counter-clockwise
     let mut ends = core::mem::take(&mut cx.touch_ends);
@@ -123,7 +121,17 @@ fn relink_bundles(cx: &mut Context, i: usize, j: usize, crack: bool) -> bool {
     }
     ends.sort_by(|a, b| cmp_around(o, a.0, b.0));
     // Where every bundle is doubled both starts alternate: arriving first makes cracks,
-    // leaving first walls. Elsewhere the bundles that are not doubled decide.
+    // leaving first walls, and only the far ends can tell which it is. Elsewhere the
+    // bundles that are not doubled decide, and only one start alternates.
+    let mut all_doubled = true;
+    let mut k = 0;
+    while k < ends.len() {
+        let e = bundle_end(o, &ends, k);
+        let ins = ends[k..e].iter().filter(|x| x.2).count();
+        all_doubled &= 2 * ins == e - k;
+        k = e;
+    }
+    let crack = !all_doubled || is_crack(cx, i, j);
     let paired = [crack, !crack].into_iter().any(|first_arrives| {
         cx.relink.clear();
         pair_alternating(o, &ends, first_arrives, &mut cx.relink)
@@ -148,10 +156,7 @@ fn pair_alternating(
     let mut first_in: Option<NodeId> = None;
     let mut k = 0;
     while k < ends.len() {
-        let mut e = k + 1;
-        while e < ends.len() && cmp_around(o, ends[k].0, ends[e].0) == Ordering::Equal {
-            e += 1;
-        }
+        let e = bundle_end(o, ends, k);
         let bundle = &ends[k..e];
         let ins = bundle.iter().filter(|x| x.2).count();
         let outs = bundle.len() - ins;
@@ -206,29 +211,13 @@ fn any_doubled(cx: &Context, i: usize, j: usize) -> bool {
     })
 }
 
-/// Whether every edge at the position of `cx.shared[i..j]` is doubled: as many edges
-/// arrive from each far end as leave towards it (a wall or a crack runs through). Quadratic
-/// in the visits, which are few; allocates nothing.
-fn all_doubled(cx: &Context, i: usize, j: usize) -> bool {
-    let nodes = &cx.shared[i..j];
-    let count = |p: Point, arriving: bool| {
-        nodes
-            .iter()
-            .filter(|&&n| live(cx, n))
-            .filter(|&&n| {
-                let m = if arriving {
-                    cx.pool.prev(n)
-                } else {
-                    cx.pool.next(n)
-                };
-                cx.pool.p(m) == p
-            })
-            .count()
-    };
-    nodes.iter().filter(|&&n| live(cx, n)).all(|&n| {
-        let (a, b) = (cx.pool.p(cx.pool.prev(n)), cx.pool.p(cx.pool.next(n)));
-        count(a, true) == count(a, false) && count(b, true) == count(b, false)
-    })
+/// The end of the bundle starting at `ends[k]`: the run of ends in its direction from `o`.
+fn bundle_end(o: Point, ends: &[(Point, NodeId, bool)], k: usize) -> usize {
+    let mut e = k + 1;
+    while e < ends.len() && cmp_around(o, ends[k].0, ends[e].0) == Ordering::Equal {
+        e += 1;
+    }
+    e
 }
 
 /// Whether the region lies on both sides of the doubled edge from `x` to `y` — a crack
@@ -279,6 +268,7 @@ fn crack_at(cx: &Context, y_node: NodeId, x: Point, nets: &mut Vec<(Point, i32)>
     }
     None
 }
+
 /// Whether the doubled edges through the position of `cx.shared[i..j]` are cracks into the
 /// region (its inside on both sides) rather than walls, as read at their far ends; walls
 /// when no far end tells.

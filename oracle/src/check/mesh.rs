@@ -158,7 +158,6 @@ impl<'a> Mesh<'a> {
         let mut fails = Failures::default();
         let region = self.region;
         let mut stamps = region.stamps();
-        let mut pieces = Vec::new();
         self.each_edge(|u, v, _, k| {
             // Each undirected edge once.
             if u > v && self.uses(v, u) > 0 {
@@ -172,7 +171,7 @@ impl<'a> Mesh<'a> {
                     return;
                 }
                 if cross_properly(a, b, region.pts[e.a as usize], region.pts[e.b as usize])
-                    && !region.crosses_zero_width_piece(i, a, b, &mut pieces)
+                    && !region.crosses_zero_width_piece(i, a, b)
                 {
                     fails.note(|| {
                         format!(

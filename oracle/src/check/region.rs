@@ -96,6 +96,10 @@ pub(crate) struct Region {
     /// walked both ways, or an edge of a zero-area ring. Such an edge bounds nothing
     /// (`w` is the same on both sides), so a triangulation may cross it.
     pub zero_width: Vec<bool>,
+    /// Per edge of [`Region::edges`], its positions from end to end with those lying on it
+    /// in between (representatives): `chains[chain_starts[i]..chain_starts[i + 1]]`.
+    chains: Vec<u32>,
+    chain_starts: Vec<usize>,
     /// Per representative: the region's angle there in radians (`NaN` for positions on no
     /// boundary piece; `2π` stands for "same value all around", see [`Region::angle_sum`]).
     pub theta: Vec<f64>,
@@ -121,6 +125,8 @@ impl Region {
             edges: Vec::new(),
             pieces: HashMap::new(),
             zero_width: Vec::new(),
+            chains: Vec::new(),
+            chain_starts: Vec::new(),
             theta: Vec::new(),
             area2: Exact::default(),
             points: None,
@@ -506,39 +512,30 @@ impl Region {
         w
     }
 
+    /// Edge `i` as its chain of positions (see [`Region::chains`]).
+    fn chain(&self, i: usize) -> &[u32] {
+        &self.chains[self.chain_starts[i]..self.chain_starts[i + 1]]
+    }
+
+    /// Whether the piece `u v` has net jump 0.
+    fn zero_piece(&self, u: u32, v: u32) -> bool {
+        self.pieces.get(&(u.min(v), u.max(v))) == Some(&0)
+    }
+
     /// Whether segment `a b`, which crosses edge `i` properly, does so on a piece of it with
-    /// net jump 0 (the segment meets the edge's line once, so then nowhere else).
-    pub(crate) fn crosses_zero_width_piece(
-        &self,
-        i: usize,
-        a: P,
-        b: P,
-        inside: &mut Vec<u32>,
-    ) -> bool {
-        let e = self.edges[i];
-        let (p, q) = (self.rep[e.a as usize], self.rep[e.b as usize]);
-        self.split(p, q, inside);
-        let zero = |u: u32, v: u32| self.pieces.get(&(u.min(v), u.max(v))) == Some(&0);
-        let mut from = p;
-        for (k, &to) in inside.iter().chain(std::iter::once(&q)).enumerate() {
-            if zero(from, to)
-                && cross_properly(a, b, self.pts[from as usize], self.pts[to as usize])
-            {
-                return true;
-            }
-            // through a split point between two zero-width pieces
-            if k < inside.len() {
-                let after = inside.get(k + 1).copied().unwrap_or(q);
-                if zero(from, to)
-                    && zero(to, after)
-                    && strictly_inside_segment(a, b, self.pts[to as usize])
-                {
-                    return true;
-                }
-            }
-            from = to;
-        }
-        false
+    /// net jump 0 (the segment meets the edge's line once, so then nowhere else), or
+    /// through a position between two such pieces.
+    pub(crate) fn crosses_zero_width_piece(&self, i: usize, a: P, b: P) -> bool {
+        let chain = self.chain(i);
+        chain.windows(2).enumerate().any(|(k, w)| {
+            let (from, to) = (w[0], w[1]);
+            self.zero_piece(from, to)
+                && (cross_properly(a, b, self.pts[from as usize], self.pts[to as usize])
+                    || chain.get(k + 2).is_some_and(|&after| {
+                        self.zero_piece(to, after)
+                            && strictly_inside_segment(a, b, self.pts[to as usize])
+                    }))
+        })
     }
 
     /// Whether `probe`, lying on edge `i`, lies on a piece of it with net jump 0.
@@ -546,19 +543,13 @@ impl Region {
         if self.zero_width.get(i) == Some(&true) {
             return true;
         }
-        let e = self.edges[i];
-        let (a, b) = (self.rep[e.a as usize], self.rep[e.b as usize]);
-        let mut inside = Vec::new();
-        self.split(a, b, &mut inside);
-        let mut from = a;
-        for &to in inside.iter().chain(std::iter::once(&b)) {
-            let (p, q) = (self.pts[from as usize], self.pts[to as usize]);
+        for w in self.chain(i).windows(2) {
+            let (p, q) = (self.pts[w[0] as usize], self.pts[w[1] as usize]);
             if probe.on_segment(p, q) {
                 // On a shared endpoint of two pieces: a vertex, where the boundary is.
                 let at_end = probe.exact_point().is_some_and(|x| x == p || x == q);
-                return !at_end && self.pieces.get(&(from.min(to), from.max(to))) == Some(&0);
+                return !at_end && self.zero_piece(w[0], w[1]);
             }
-            from = to;
         }
         false
     }
@@ -605,16 +596,21 @@ impl Region {
     /// The pieces and stars of the boundary, then conditions 4 and 5 and the angles.
     fn build_pieces(&mut self) {
         let mut stars: Vec<(u32, u32, i32)> = Vec::with_capacity(2 * self.edges.len());
-        let mut chain = Vec::new();
         let mut inside = Vec::new();
+        self.chains.clear();
+        self.chain_starts.clear();
         for e in &self.edges {
-            let f = self.factor[e.ring as usize];
             let (a, b) = (self.rep[e.a as usize], self.rep[e.b as usize]);
             self.split(a, b, &mut inside);
-            chain.clear();
-            chain.push(a);
-            chain.extend_from_slice(&inside);
-            chain.push(b);
+            self.chain_starts.push(self.chains.len());
+            self.chains.push(a);
+            self.chains.extend_from_slice(&inside);
+            self.chains.push(b);
+        }
+        self.chain_starts.push(self.chains.len());
+        for (i, e) in self.edges.iter().enumerate() {
+            let f = self.factor[e.ring as usize];
+            let chain = &self.chains[self.chain_starts[i]..self.chain_starts[i + 1]];
             for w in chain.windows(2) {
                 let (u, v) = (w[0], w[1]);
                 let key = (u.min(v), u.max(v));
@@ -641,19 +637,13 @@ impl Region {
             i = j;
         }
         self.check_absolute_winding(&stars, &stars_of);
-        self.zero_width = Vec::with_capacity(self.edges.len());
-        for k in 0..self.edges.len() {
-            let e = self.edges[k];
-            let (a, b) = (self.rep[e.a as usize], self.rep[e.b as usize]);
-            self.split(a, b, &mut inside);
-            let mut from = a;
-            let mut zero = true;
-            for &to in inside.iter().chain(std::iter::once(&b)) {
-                zero &= self.pieces.get(&(from.min(to), from.max(to))) == Some(&0);
-                from = to;
-            }
-            self.zero_width.push(zero);
-        }
+        self.zero_width = (0..self.edges.len())
+            .map(|i| {
+                self.chain(i)
+                    .windows(2)
+                    .all(|w| self.zero_piece(w[0], w[1]))
+            })
+            .collect();
     }
 
     /// Condition 4 at one position, and the region's angle there; records the position's

@@ -286,6 +286,42 @@ impl<T: Coord> Triangulator<T> {
         }
     }
 
+    /// Runs strict mode's input check alone, without triangulating: the same loading,
+    /// cleaning (the edge sweep that refuses crossings) and nesting (holes inside their
+    /// polygons) that [`Triangulator::triangulate`] runs first, with `nesting` as in
+    /// [`Options::with_nesting`]. `Ok` means no edges cross and every hole lies inside its
+    /// polygon; the error is the one strict `triangulate` gives. (A few defects of weakly
+    /// simple rings only show while clipping, such as [`Error::LobesWindOpposite`].) Useful
+    /// to validate data once, or to see what the check costs (`polytri bench` times it).
+    ///
+    /// ```
+    /// # fn main() -> Result<(), polytri::Error> {
+    /// let mut tri = polytri::Triangulator::<f64>::new();
+    /// let square = [[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]];
+    /// tri.check(&square, &[0], polytri::Nesting::Auto)?;
+    /// let bow_tie = [[0.0, 0.0], [4.0, 4.0], [4.0, 0.0], [0.0, 4.0]];
+    /// assert!(tri.check(&bow_tie, &[0], polytri::Nesting::Auto).is_err());
+    /// # Ok(())
+    /// # }
+    /// ```
+    ///
+    /// # Errors
+    ///
+    /// Those of strict [`Triangulator::triangulate`] about the input.
+    pub fn check(
+        &mut self,
+        vertices: &[[T; 2]],
+        ring_starts: &[usize],
+        nesting: crate::Nesting,
+    ) -> Result<(), Error> {
+        let cx = &mut self.cx;
+        cx.careful_bridges = false;
+        cx.reset(false);
+        load::load(cx, vertices, ring_starts)?;
+        clean::clean(cx, false)?;
+        nest::nest(cx, nesting)
+    }
+
     /// Triangulates the rings given by `vertices` and `ring_starts`.
     ///
     /// `ring_starts[k]` is the index of ring `k`'s first vertex; the first entry is 0 and

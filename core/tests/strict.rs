@@ -596,3 +596,30 @@ fn ring_touching_itself_at_its_rightmost_vertex_keeps_both_lobes() {
         }
     }
 }
+
+/// `Triangulator::check` runs the strict input check alone: on every earcut fixture it
+/// refuses exactly what strict `triangulate` refuses for crossing edges or misplaced holes,
+/// with the same error, and accepts everything strict `triangulate` triangulates.
+#[test]
+fn check_alone_agrees_with_strict_triangulate() {
+    let mut tri = Triangulator::<f64>::new();
+    let mut out = Vec::new();
+    let opts = strict(Strategy::Fast);
+    for name in fixture_names() {
+        let flat = fixture(&name);
+        let checked = tri.check(&flat.vertices, &flat.ring_starts, Nesting::FirstIsOuter);
+        let triangulated = tri
+            .triangulate(&flat.vertices, &flat.ring_starts, &opts, &mut out)
+            .map(|_| ());
+        match (&checked, &triangulated) {
+            (Ok(()), Ok(())) => {}
+            // defects of weakly simple rings only show while clipping
+            (Ok(()), Err(Error::LobesWindOpposite { .. })) => {}
+            (Err(a), Err(b)) => assert_eq!(a, b, "{name}: check and triangulate disagree"),
+            _ => panic!("{name}: check says {checked:?}, triangulate {triangulated:?}"),
+        }
+        if SELF_INTERSECTING.contains(&name.as_str()) {
+            assert!(checked.is_err(), "{name}: crossing edges passed the check");
+        }
+    }
+}

@@ -47,14 +47,16 @@ pub(crate) fn clean(cx: &mut Context, untwist: bool) -> Result<bool, Error> {
             let ((a, b), (p, q)) = (crossed(c.a), crossed(c.b));
             crate::clip::crosses(a, b, p, q)
         });
+        // (relinking may have left collinear turns)
         if still_crossed {
             cx.sweep.order_is_sorted = true;
-            sweep(cx, false)?;
+            sweep(cx, None)?;
         } else {
-            sweep(cx, true)?;
+            sweep(cx, Some(false))?;
         }
     } else {
-        sweep(cx, true)?;
+        // the filter left no collinear turn
+        sweep(cx, Some(true))?;
     }
     canonical_vertices(cx);
     // nodes from here on are the ones edge splits add
@@ -137,9 +139,9 @@ fn drop_node(cx: &mut Context, n: NodeId, ring: u32, reason: DropReason) {
 }
 
 /// Sweeps every live edge: crossings are errors in strict mode, repairs in lenient mode.
-/// With `try_prune`, first tries to prove that no two edges meet, which gives the same
-/// result faster.
-fn sweep(cx: &mut Context, try_prune: bool) -> Result<(), Error> {
+/// With `prune`, first tries to prove that no two edges meet, which gives the same result
+/// faster; `Some(true)` says that no turn is collinear (see [`prune::edges_apart`]).
+fn sweep(cx: &mut Context, prune: Option<bool>) -> Result<(), Error> {
     cx.starts.clear();
     cx.starts
         .extend(cx.rings.iter().filter(|r| r.alive).map(|r| r.start));
@@ -148,8 +150,11 @@ fn sweep(cx: &mut Context, try_prune: bool) -> Result<(), Error> {
     // Usually no two edges meet at all; proving that is cheaper than the sweep and gives
     // its result: no touches, no crossings, and no shared positions to sort out (the order
     // of `sweep.order` only matters for grouping equal positions).
-    if try_prune && prune::edges_apart(&cx.pool, &cx.starts, &mut cx.prune, &mut cx.sweep.order) {
-        return Ok(());
+    if let Some(turns_proper) = prune {
+        let order = &mut cx.sweep.order;
+        if prune::edges_apart(&cx.pool, &cx.starts, &mut cx.prune, order, turns_proper) {
+            return Ok(());
+        }
     }
     validate::sweep(
         &cx.pool,

@@ -50,14 +50,19 @@ const SMALL: usize = 512;
 /// Whether the edges of the rings through `starts` are proved apart: no two meet, except
 /// adjacent ones at their shared vertex and nowhere else. `false` means "not proved" (some
 /// pair meets, or the budget ran out). `nodes` is filled with the rings' nodes either way.
+///
+/// `turns_proper` says that no node's turn is collinear (as `clean`'s filter leaves every
+/// ring): then adjacent edges meet only at their shared vertex, and no pair of them needs
+/// a predicate.
 pub(crate) fn edges_apart(
     pool: &Pool,
     starts: &[NodeId],
     scratch: &mut PruneScratch,
     nodes: &mut Vec<NodeId>,
+    turns_proper: bool,
 ) -> bool {
     collect_boxes(pool, starts, &mut scratch.boxes, Some(nodes));
-    scan(scratch, BUDGET_PER_EDGE, |e, f| meet(pool, e, f)) == Scan::Done
+    scan(scratch, BUDGET_PER_EDGE, |e, f| meet(pool, e, f, turns_proper)) == Scan::Done
 }
 
 /// Lenient mode: flags every edge (by its start node) of the rings through `starts` that
@@ -253,12 +258,17 @@ fn scan_grid(
 }
 
 /// Whether edges `e` and `f`, whose boxes overlap, meet other than adjacent edges at their
-/// shared vertex only (exact).
-fn meet(pool: &Pool, e: &EdgeBox, f: &EdgeBox) -> bool {
-    let (a, b, c, d) = (pool.p(e.from), pool.p(e.to), pool.p(f.from), pool.p(f.to));
+/// shared vertex only (exact). With `turns_proper`, no turn is collinear (see
+/// [`edges_apart`]).
+#[inline]
+fn meet(pool: &Pool, e: &EdgeBox, f: &EdgeBox, turns_proper: bool) -> bool {
     if e.to == f.from && f.to == e.from {
         return true; // a ring of two: the edges lie on each other
     }
+    if turns_proper && (e.to == f.from || f.to == e.from) {
+        return false;
+    }
+    let (a, b, c, d) = (pool.p(e.from), pool.p(e.to), pool.p(f.from), pool.p(f.to));
     if e.to == f.from {
         // a → b → d: they share b and nothing else unless they are collinear
         return orient2d(a, b, d) == Orientation::Collinear;
@@ -305,11 +315,21 @@ mod tests {
             .collect()
     }
 
+    /// `edges_apart` without assumptions; where no turn is collinear, also with
+    /// `turns_proper`, which must agree.
     fn apart(rings: &[&[(f64, f64)]]) -> bool {
         let (pool, starts) = build(rings);
         let mut nodes = Vec::new();
-        let ok = edges_apart(&pool, &starts, &mut PruneScratch::default(), &mut nodes);
+        let ok = edges_apart(&pool, &starts, &mut PruneScratch::default(), &mut nodes, false);
         assert_eq!(nodes.len(), rings.iter().map(|r| r.len()).sum::<usize>());
+        let proper = (0..pool.len() as u32).map(NodeId).all(|n| {
+            orient2d(pool.p(pool.prev(n)), pool.p(n), pool.p(pool.next(n)))
+                != Orientation::Collinear
+        });
+        if proper {
+            let fast = edges_apart(&pool, &starts, &mut PruneScratch::default(), &mut nodes, true);
+            assert_eq!(fast, ok, "turns_proper changed the answer");
+        }
         ok
     }
 

@@ -25,7 +25,7 @@
 use crate::grid::Cells;
 use crate::nest::corner_contains;
 use crate::pool::NodeId;
-use crate::predicates::{approx_interior_angle, left_of, orient2d, within_box, Orientation, Point};
+use crate::predicates::{approx_angle_rank, left_of, orient2d, within_box, Orientation, Point};
 use crate::report::RepairKind;
 use crate::triangulator::Context;
 use crate::{Error, Strategy};
@@ -344,8 +344,8 @@ impl<'a> Clipper<'a> {
             return;
         }
         let (a, b, c) = self.corner(n);
-        // positive angles order like their bit patterns
-        let key = approx_interior_angle(a, b, c).to_bits();
+        // non-negative ranks order like their bit patterns
+        let key = approx_angle_rank(a, b, c).to_bits();
         let stamp = self.cx.pool.get(n).stamp;
         self.cx.clip.heap.push((key, n, stamp));
     }

@@ -104,21 +104,25 @@ pub(crate) fn cmp_xy(a: Point, b: Point) -> core::cmp::Ordering {
     a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y))
 }
 
-/// An estimate of the interior angle at b (in radians, 0..2π) of the turn a → b → c for a
-/// counter-clockwise polygon. **Not exact**: it only ranks ears for the quality strategy and
-/// never decides validity.
+/// A number that grows with the interior angle at b of the left turn a → b → c (0 to π),
+/// from 0 to 2, for ranking ears: a pseudo-angle, `1 − cos θ / (|sin θ| + |cos θ|)` up to
+/// the common length factor, which orders angles as they are ordered but needs no `atan2`
+/// or square root. **Not exact**: it only ranks ears for the quality strategy and never
+/// decides validity.
 #[inline]
-pub(crate) fn approx_interior_angle(a: Point, b: Point, c: Point) -> f64 {
+pub(crate) fn approx_angle_rank(a: Point, b: Point, c: Point) -> f64 {
     let (ux, uy) = (a.x - b.x, a.y - b.y);
     let (vx, vy) = (c.x - b.x, c.y - b.y);
-    // angle swept counter-clockwise from b→c to b→a
+    // the angle swept counter-clockwise from b→c to b→a: sin from the cross product,
+    // cos from the dot product
     let cross = vx * uy - vy * ux;
     let dot = vx * ux + vy * uy;
-    let angle = cross.atan2(dot);
-    if angle < 0.0 {
-        angle + core::f64::consts::TAU
+    let norm = cross.abs() + dot.abs();
+    if norm > 0.0 {
+        1.0 - dot / norm
     } else {
-        angle
+        // vanishing sides (underflow): rank last
+        2.0
     }
 }
 
@@ -193,11 +197,20 @@ mod tests {
     }
 
     #[test]
-    fn angle_estimate() {
-        let a = approx_interior_angle(p(0., 1.), p(0., 0.), p(1., 0.));
-        // for a CCW polygon ... → (0,1) → (0,0) → (1,0): a left turn, interior angle 90°
-        assert!((a - core::f64::consts::FRAC_PI_2).abs() < 1e-12, "{a}");
-        let r = approx_interior_angle(p(1., 0.), p(0., 0.), p(0., 1.));
-        assert!((r - 1.5 * core::f64::consts::PI).abs() < 1e-12, "{r}");
+    fn angle_rank_orders_like_the_angle() {
+        // a left turn with interior angle t at the origin, for t from 1° to 179°
+        let at = |t: f64| approx_angle_rank(p(t.cos(), t.sin()), p(0., 0.), p(1., 0.));
+        let mut last = -1.0;
+        for deg in 1..180 {
+            let rank = at(f64::from(deg).to_radians());
+            assert!(rank > last, "{deg}°: {rank} after {last}");
+            assert!((0.0..=2.0).contains(&rank), "{deg}°: {rank}");
+            last = rank;
+        }
+        assert!((at(core::f64::consts::FRAC_PI_2) - 1.0).abs() < 1e-12);
+        // the length of the sides does not matter
+        let long = approx_angle_rank(p(0., 7.), p(0., 0.), p(3., 3.));
+        let short = approx_angle_rank(p(0., 0.5), p(0., 0.), p(1., 1.));
+        assert!((long - short).abs() < 1e-12);
     }
 }

@@ -62,7 +62,9 @@ pub(crate) fn edges_apart(
     turns_proper: bool,
 ) -> bool {
     collect_boxes(pool, starts, &mut scratch.boxes, Some(nodes));
-    scan(scratch, BUDGET_PER_EDGE, |e, f| meet(pool, e, f, turns_proper)) == Scan::Done
+    scan(scratch, BUDGET_PER_EDGE, |e, f| {
+        meet(pool, e, f, turns_proper)
+    }) == Scan::Done
 }
 
 /// Lenient mode: flags every edge (by its start node) of the rings through `starts` that
@@ -320,14 +322,26 @@ mod tests {
     fn apart(rings: &[&[(f64, f64)]]) -> bool {
         let (pool, starts) = build(rings);
         let mut nodes = Vec::new();
-        let ok = edges_apart(&pool, &starts, &mut PruneScratch::default(), &mut nodes, false);
+        let ok = edges_apart(
+            &pool,
+            &starts,
+            &mut PruneScratch::default(),
+            &mut nodes,
+            false,
+        );
         assert_eq!(nodes.len(), rings.iter().map(|r| r.len()).sum::<usize>());
         let proper = (0..pool.len() as u32).map(NodeId).all(|n| {
             orient2d(pool.p(pool.prev(n)), pool.p(n), pool.p(pool.next(n)))
                 != Orientation::Collinear
         });
         if proper {
-            let fast = edges_apart(&pool, &starts, &mut PruneScratch::default(), &mut nodes, true);
+            let fast = edges_apart(
+                &pool,
+                &starts,
+                &mut PruneScratch::default(),
+                &mut nodes,
+                true,
+            );
             assert_eq!(fast, ok, "turns_proper changed the answer");
         }
         ok

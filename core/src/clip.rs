@@ -48,7 +48,8 @@ pub(crate) struct ClipScratch {
     reflex: Vec<NodeId>,
     /// The same nodes by grid cell, when there are many (see `GRID_MIN_REFLEX`).
     cells: Cells,
-    /// Quality strategy: candidate ears by angle at the tip, with the node's stamp.
+    /// Quality strategy: candidate ears by angle at the tip, with the node's stamp and the
+    /// clipper's epoch when queued.
     heap: EarQueue,
     /// Rings still to clip: pieces of a polygon split by a diagonal (lenient fallback).
     pending: Vec<NodeId>,
@@ -59,13 +60,13 @@ pub(crate) struct ClipScratch {
     split_budget: usize,
 }
 
-/// The quality strategy's queue of candidate ears: (angle key, node, stamp), smallest
-/// first. A 4-ary heap: popping from a queue of a million ears touches half as many levels
+/// The quality strategy's queue of candidate ears: (angle key, node, stamp, epoch),
+/// smallest first. A 4-ary heap: popping from a queue of a million ears touches half as many levels
 /// as a binary heap, and a node's four children share a cache line. Entries are totally
 /// ordered (equal ones are identical), so the pop order is that of any priority queue.
 #[derive(Debug, Default)]
 struct EarQueue {
-    items: Vec<(u64, NodeId, u32)>,
+    items: Vec<Ear>,
 }
 
 impl EarQueue {
@@ -73,7 +74,7 @@ impl EarQueue {
         self.items.clear();
     }
 
-    fn push(&mut self, item: (u64, NodeId, u32)) {
+    fn push(&mut self, item: Ear) {
         let mut i = self.items.len();
         self.items.push(item);
         while i > 0 {
@@ -87,7 +88,7 @@ impl EarQueue {
         self.items[i] = item;
     }
 
-    fn pop(&mut self) -> Option<(u64, NodeId, u32)> {
+    fn pop(&mut self) -> Option<Ear> {
         let last = self.items.pop()?;
         let Some(&top) = self.items.first() else {
             return Some(last);
@@ -118,6 +119,9 @@ impl EarQueue {
     }
 }
 
+/// A queued ear: angle key, tip, the tip's stamp and the clipper's epoch when queued.
+type Ear = (u64, NodeId, u32, u32);
+
 /// One polygon being clipped.
 struct Clipper<'a> {
     cx: &'a mut Context,
@@ -133,6 +137,9 @@ struct Clipper<'a> {
     /// Lenient mode with crossing edges: ears using a crossed edge wait until nothing else
     /// can be cut, so that overlaps stay where the input crosses itself.
     avoid_crossed: bool,
+    /// Bumped whenever an ear test may change for a tip none of whose neighbours changed
+    /// (see [`Clipper::still_ear`]).
+    epoch: u32,
 }
 
 /// Edge tests the lenient split search may spend per `clip` call (see
@@ -210,6 +217,7 @@ impl<'a> Clipper<'a> {
                 no_fan: false,
                 indexed,
                 avoid_crossed,
+                epoch: 0,
             },
             start,
         )
@@ -285,7 +293,7 @@ impl<'a> Clipper<'a> {
         let mut last = start;
         let mut rescanned = false;
         while self.len > 3 {
-            let Some((_, n, stamp)) = self.cx.clip.heap.pop() else {
+            let Some((_, n, stamp, epoch)) = self.cx.clip.heap.pop() else {
                 if self.avoid_crossed {
                     // only ears at crossed edges are left: allow them, look again
                     self.avoid_crossed = false;
@@ -306,7 +314,7 @@ impl<'a> Clipper<'a> {
                 return self.fast(last);
             };
             let node = self.cx.pool.get(n);
-            if node.removed || node.stamp != stamp || !self.is_ear(n) {
+            if node.removed || node.stamp != stamp || !self.still_ear(n, epoch) {
                 continue;
             }
             let prev = self.cx.pool.prev(n);
@@ -347,7 +355,23 @@ impl<'a> Clipper<'a> {
         // non-negative ranks order like their bit patterns
         let key = approx_angle_rank(a, b, c).to_bits();
         let stamp = self.cx.pool.get(n).stamp;
-        self.cx.clip.heap.push((key, n, stamp));
+        self.cx.clip.heap.push((key, n, stamp, self.epoch));
+    }
+
+    /// Whether `n`, an ear when queued at `epoch` and not touched since, is still one.
+    ///
+    /// Cutting an ear relinks only its two neighbours (whose stamps change), removes a
+    /// vertex and turns reflex vertices convex: the ear test of an untouched tip can only
+    /// change where it looks at a vertex's neighbours, which it does for a vertex lying on
+    /// the triangle's boundary. In valid input that is a vertex at one of the corners'
+    /// positions (no vertex lies inside an edge), so a node at a shared position; the epoch
+    /// moves when such a node's neighbours change, and when a vertex turns reflex again
+    /// (around removed walls). Input with crossing edges is tested again every time.
+    fn still_ear(&self, n: NodeId, epoch: u32) -> bool {
+        let trusted = epoch == self.epoch && (!self.cx.lenient || self.cx.crossings.is_empty());
+        // tests and fuzzing (debug assertions) check the argument on every pop
+        debug_assert!(!trusted || self.is_ear(n), "queued ear {n:?} went stale");
+        trusted || self.is_ear(n)
     }
 
     /// Positions of `n`'s predecessor, `n` and its successor.
@@ -419,6 +443,9 @@ impl<'a> Clipper<'a> {
     fn cut(&mut self, ear: NodeId) -> NodeId {
         let pool = &self.cx.pool;
         let (a, c) = (pool.prev(ear), pool.next(ear));
+        if pool.get(a).shared || pool.get(c).shared {
+            self.epoch = self.epoch.wrapping_add(1);
+        }
         self.emit(a, ear, c);
         self.unlink(ear);
         self.tidy(a);
@@ -500,7 +527,9 @@ impl<'a> Clipper<'a> {
             }
             dropped = true;
         }
-        if !dropped {
+        if dropped {
+            self.epoch = self.epoch.wrapping_add(1);
+        } else {
             // only n's own turn changed (its neighbour on the cut side is new); the other
             // neighbour of the cut is tidied separately
             self.reclassify(n);
@@ -522,6 +551,7 @@ impl<'a> Clipper<'a> {
             node.reflex = reflex;
             if reflex {
                 // only possible around removed walls: list it again
+                self.epoch = self.epoch.wrapping_add(1);
                 self.reflex_count += 1;
                 self.cx.clip.reflex.push(n);
                 if self.indexed {
@@ -904,7 +934,7 @@ mod tests {
         for _ in 0..20_000 {
             if random(3) < 2 {
                 // few distinct keys and nodes: ties and duplicates happen
-                let item = (random(50), NodeId(random(40) as u32), random(3) as u32);
+                let item = (random(50), NodeId(random(40) as u32), random(3) as u32, 0);
                 queue.push(item);
                 heap.push(Reverse(item));
             } else {

@@ -522,19 +522,21 @@ impl<'a> Clipper<'a> {
                 // a wall: out to n and straight back
                 self.unlink(n);
                 n = prev;
-            } else {
+            } else if dropped {
                 break;
+            } else {
+                // only n's own turn changed (its neighbour on the cut side is new); the
+                // other neighbour of the cut is tidied separately
+                self.set_reflex(n, orient2d(pp, pn, px) != Orientation::CounterClockwise);
+                return;
             }
             dropped = true;
         }
-        if dropped {
-            self.epoch = self.epoch.wrapping_add(1);
-        } else {
-            // only n's own turn changed (its neighbour on the cut side is new); the other
-            // neighbour of the cut is tidied separately
+        if !dropped {
             self.reclassify(n);
             return;
         }
+        self.epoch = self.epoch.wrapping_add(1);
         for m in [self.cx.pool.prev(n), n, self.cx.pool.next(n)] {
             self.reclassify(m);
         }
@@ -542,10 +544,14 @@ impl<'a> Clipper<'a> {
 
     /// Updates whether `n` is reflex.
     fn reclassify(&mut self, n: NodeId) {
-        if self.cx.pool.get(n).removed {
-            return;
+        if !self.cx.pool.get(n).removed {
+            let reflex = turn(self.cx, n) != Orientation::CounterClockwise;
+            self.set_reflex(n, reflex);
         }
-        let reflex = turn(self.cx, n) != Orientation::CounterClockwise;
+    }
+
+    /// Records whether live node `n` is reflex, keeping the counts and the index.
+    fn set_reflex(&mut self, n: NodeId, reflex: bool) {
         let node = self.cx.pool.get_mut(n);
         if node.reflex != reflex {
             node.reflex = reflex;

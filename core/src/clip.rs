@@ -762,14 +762,24 @@ impl<'a> Clipper<'a> {
         false
     }
 
-    /// A diagonal a–b between distinct positions that leaves both ends inwards and crosses
-    /// or touches no edge of the ring.
+    /// A diagonal a–b between distinct positions that leaves both ends inwards, crosses or
+    /// touches no edge of the ring, and runs inside it: the ring winds counter-clockwise
+    /// around it (earcut's `middleInside`). Where the ring crosses itself, a diagonal can
+    /// pass the tests at both ends and still run across a region the ring does not enclose
+    /// (a peninsula between two of its arms); both pieces would then wind around that
+    /// region, and clipping the counter-clockwise one fills it with triangles. A diagonal
+    /// along an edge of the ring has the ring's inside on one side only; it only separates
+    /// the loop between the edge's ends, and stays allowed.
     fn valid_diagonal(&self, a: NodeId, b: NodeId) -> bool {
         let pool = &self.cx.pool;
         let (pa, pb) = (pool.p(a), pool.p(b));
         if pa == pb || !sees(pool, a, pb) || !sees(pool, b, pa) {
             return false;
         }
+        // no edge meets the open diagonal, so the ring winds around all of it as around
+        // its first point
+        let mut winding = 0;
+        let mut along_edge = false;
         let mut e = a;
         // `a` is live, so the walk comes back to it after `len` edges; the bound only keeps
         // a broken ring from looping forever.
@@ -783,9 +793,14 @@ impl<'a> Clipper<'a> {
             if (pe == pa || pe == pb || pf == pa || pf == pb) && overlaps(pa, pb, pe, pf) {
                 return false;
             }
+            if (pe == pa && pf == pb) || (pe == pb && pf == pa) {
+                along_edge = true;
+            } else {
+                winding += crossing_past(pe, pf, pa, pb);
+            }
             e = f;
             if e == a {
-                return true;
+                return along_edge || winding > 0;
             }
         }
         false
@@ -840,6 +855,25 @@ pub(crate) fn crosses(a: Point, b: Point, c: Point, d: Point) -> bool {
     let (o1, o2) = (orient2d(a, b, c), orient2d(a, b, d));
     let (o3, o4) = (orient2d(c, d, a), orient2d(c, d, b));
     o1 != Collinear && o2 != Collinear && o1 != o2 && o3 != Collinear && o4 != Collinear && o3 != o4
+}
+
+/// Signed crossing of edge e → f with the ray towards +x from the point just past `o` on
+/// the way to `q` (o + ε·(q − o), ε → 0+): +1 upwards, −1 downwards, else 0. Half-open in
+/// y like `nest`'s crossing, so the sum over a ring is its winding number around the point
+/// (when no edge runs through it). Exact without computing the point: a tie in y goes by
+/// the direction to `q`, and where `o` lies on the edge's line, the point lies on `q`'s
+/// side of it.
+fn crossing_past(e: Point, f: Point, o: Point, q: Point) -> i32 {
+    let above = |p: Point| p.y > o.y || (p.y == o.y && q.y < o.y);
+    let side = match orient2d(e, f, o) {
+        Orientation::Collinear => orient2d(e, f, q),
+        side => side,
+    };
+    match (above(e), above(f), side) {
+        (false, true, Orientation::CounterClockwise) => 1,
+        (true, false, Orientation::Clockwise) => -1,
+        _ => 0,
+    }
 }
 
 /// Whether closed segments a–b and c–d have a point in common.
@@ -926,6 +960,39 @@ mod tests {
     use super::*;
     use std::cmp::Reverse;
     use std::collections::BinaryHeap;
+
+    /// Winding number of `ring` around the point just past `o` towards `q`.
+    fn winding_past(ring: &[(f64, f64)], o: (f64, f64), q: (f64, f64)) -> i32 {
+        let p = |(x, y): (f64, f64)| Point::new(x, y);
+        (0..ring.len())
+            .map(|i| crossing_past(p(ring[i]), p(ring[(i + 1) % ring.len()]), p(o), p(q)))
+            .sum()
+    }
+
+    #[test]
+    fn crossing_past_counts_the_winding_next_to_a_vertex() {
+        let square = [(0.0, 0.0), (4.0, 0.0), (4.0, 4.0), (0.0, 4.0)];
+        let clockwise: Vec<_> = square.iter().rev().copied().collect();
+        // (from, towards, winding of the counter-clockwise square there)
+        let cases = [
+            ((0.0, 0.0), (4.0, 4.0), 1),
+            ((0.0, 0.0), (-1.0, -1.0), 0),
+            ((0.0, 0.0), (1.0, -1.0), 0),
+            ((4.0, 0.0), (0.0, 4.0), 1),
+            ((4.0, 4.0), (0.0, 1.0), 1),
+            ((0.0, 4.0), (3.0, 4.0), 0), // along the top edge: counted as just above it
+            ((0.0, 4.0), (3.0, 3.0), 1),
+            ((2.0, 2.0), (9.0, 2.0), 1), // from inside, out across an edge: still inside
+            ((2.0, 4.0), (2.0, 0.0), 1), // from the middle of an edge, inwards
+            ((2.0, 4.0), (2.0, 9.0), 0), // and outwards
+            ((4.0, 2.0), (3.0, 2.0), 1),
+            ((4.0, 2.0), (5.0, 2.0), 0),
+        ];
+        for (o, q, winding) in cases {
+            assert_eq!(winding_past(&square, o, q), winding, "{o:?} -> {q:?}");
+            assert_eq!(winding_past(&clockwise, o, q), -winding, "{o:?} -> {q:?}");
+        }
+    }
 
     #[test]
     fn ear_queue_pops_like_a_binary_heap() {

@@ -139,7 +139,10 @@ fn run<T: Coord>(
         return Ok(None);
     }
     nest::nest(cx, options.nesting)?;
-    if cx.lenient && !cx.crossings.is_empty() {
+    // Every run is measured against the input's area, as earcut measures: untwisting
+    // relinks the rings and changes their shoelace sum, so that run keeps the area of
+    // the run before it (always one without untwisting).
+    if cx.lenient && !cx.crossings.is_empty() && !untwist {
         cx.area = signed_area(cx);
     }
     let holes = touch::join(cx);

@@ -44,17 +44,10 @@ use crate::input::{Input, Nesting, Role};
 /// (every strategy and precision) until the gap closes, and a replay fails once no run
 /// needs it any more — delete the entry then, so the bound tightens.
 ///
-/// `water-huge2` at rotation 0: quality measures 3.91e-3 (f64 and f32) against earcut's
-/// 3e-3 (fast, 9.7e-4 since careful bridges, meets it); its edges cross, so no exact
-/// triangulation exists (see issue 2's note). Quality's runs with careful bridges cover a
-/// whole peninsula of land (pieces around the crossing bow ties near (1430, 3400) come out
-/// counter-clockwise around it), so the run without them stays the best.
-pub const KNOWN_GAPS: [KnownGap; 1] = [KnownGap {
-    case: "earcut/water-huge2",
-    strategies: &["quality"],
-    rotation: 0,
-    deviation: 3.92e-3,
-}];
+/// Empty: the last one, `water-huge2` at rotation 0 with quality (3.91e-3 against earcut's
+/// 3e-3), closed when lenient splits came to require diagonals the ring winds around (a
+/// split across a peninsula of land had filled it); it measures 9.6e-4 since.
+pub const KNOWN_GAPS: [KnownGap; 0] = [];
 
 /// Cases polytri still gets wrong, with the issue tracking each: their failures are
 /// reported as [`Replay::known_failures`] instead of [`Replay::failures`] (the snapshot

@@ -42,9 +42,33 @@ pub(crate) struct PruneScratch {
     entries: Vec<u32>,
     /// [`mark_crossed`]: start nodes of the crossing edges found.
     flagged: Vec<NodeId>,
+    /// Chain scan: the x-monotone chains of the rings.
+    chains: Vec<Chain>,
 }
 
-/// Up to this many edges, sorting the boxes is cheaper than a grid.
+/// A run of consecutive edges of one ring along which x never decreases or never
+/// increases, with no two vertical edges in a row, and its bounding box. Within such a
+/// chain only neighbouring edges' boxes can overlap, and edges on either side of a vertical
+/// one: the others lie at different x.
+#[derive(Clone, Copy, Debug)]
+struct Chain {
+    /// Index of its first edge (in ring order) in `boxes`, and the number of edges.
+    start: u32,
+    len: u32,
+    /// Ring order runs towards smaller x.
+    falling: bool,
+    x0: f64,
+    x1: f64,
+    y0: f64,
+    y1: f64,
+}
+
+/// Above [`SMALL`] edges, the chain scan is used while the rings have at most one chain per
+/// this many edges (curves have few, long chains; a comb or a zigzag has one per edge or
+/// two, and takes the grid).
+const EDGES_PER_CHAIN: usize = 4;
+
+/// Up to this many edges, sorting the boxes is cheaper than a grid or chains.
 const SMALL: usize = 512;
 
 /// Whether the edges of the rings through `starts` are proved apart: no two meet, except
@@ -62,7 +86,7 @@ pub(crate) fn edges_apart(
     turns_proper: bool,
 ) -> bool {
     collect_boxes(pool, starts, &mut scratch.boxes, Some(nodes));
-    scan(scratch, BUDGET_PER_EDGE, |e, f| {
+    scan(pool, scratch, BUDGET_PER_EDGE, |e, f| {
         meet(pool, e, f, turns_proper)
     }) == Scan::Done
 }
@@ -75,7 +99,7 @@ pub(crate) fn mark_crossed(pool: &mut Pool, starts: &[NodeId], scratch: &mut Pru
     collect_boxes(pool, starts, &mut scratch.boxes, None);
     let mut flagged = core::mem::take(&mut scratch.flagged);
     flagged.clear();
-    let done = scan(scratch, CROSSED_BUDGET_PER_EDGE, |e, f| {
+    let done = scan(pool, scratch, CROSSED_BUDGET_PER_EDGE, |e, f| {
         let (a, b, c, d) = (pool.p(e.from), pool.p(e.to), pool.p(f.from), pool.p(f.to));
         if crate::clip::crosses(a, b, c, d) {
             flagged.push(e.from);
@@ -142,8 +166,10 @@ enum Scan {
 }
 
 /// Visits the pairs of `scratch.boxes` whose boxes overlap until `visit` returns true,
-/// allowing `per_edge` box comparisons (and cell listings) per edge.
+/// allowing `per_edge` box comparisons (and cell listings) per edge. `scratch.boxes` must
+/// hold the rings' edges in ring order, as [`collect_boxes`] leaves them.
 fn scan(
+    pool: &Pool,
     scratch: &mut PruneScratch,
     per_edge: usize,
     visit: impl FnMut(&EdgeBox, &EdgeBox) -> bool,
@@ -151,9 +177,162 @@ fn scan(
     let budget = per_edge * scratch.boxes.len() + 64;
     if scratch.boxes.len() <= SMALL {
         scan_sorted(&mut scratch.boxes, budget, visit)
+    } else if collect_chains(pool, &scratch.boxes, &mut scratch.chains) {
+        scan_chains(&scratch.boxes, &mut scratch.chains, budget, visit)
     } else {
         scan_grid(scratch, budget, visit)
     }
+}
+
+/// Splits the edges in `boxes` (ring order) into x-monotone chains; false, leaving the job
+/// to the other scans, when there are too many (see [`EDGES_PER_CHAIN`]).
+fn collect_chains(pool: &Pool, boxes: &[EdgeBox], chains: &mut Vec<Chain>) -> bool {
+    chains.clear();
+    let limit = boxes.len() / EDGES_PER_CHAIN;
+    // the direction of each edge: -1 towards smaller x, 1 towards larger, 0 vertical
+    let direction = |e: &EdgeBox| {
+        let (a, b) = (pool.p(e.from).x, pool.p(e.to).x);
+        i8::from(b > a) - i8::from(b < a)
+    };
+    // the last edge's direction, and the current chain's (0 while it is one vertical edge)
+    let (mut last, mut along) = (0, 0);
+    for (i, e) in boxes.iter().enumerate() {
+        let dir = direction(e);
+        let extends = chains.last_mut().filter(|c| {
+            let joins = if dir == 0 {
+                last != 0
+            } else {
+                along == 0 || along == dir
+            };
+            // the same ring (edges follow each other)
+            joins && boxes[i - 1].to == e.from && c.len < u32::MAX
+        });
+        match extends {
+            Some(c) => {
+                c.len += 1;
+                if along == 0 && dir != 0 {
+                    along = dir;
+                    c.falling = dir < 0;
+                }
+                (c.x0, c.x1) = (c.x0.min(e.x0), c.x1.max(e.x1));
+                (c.y0, c.y1) = (c.y0.min(e.y0), c.y1.max(e.y1));
+            }
+            None => {
+                if chains.len() >= limit {
+                    return false;
+                }
+                along = dir;
+                chains.push(Chain {
+                    start: i as u32,
+                    len: 1,
+                    falling: dir < 0,
+                    x0: e.x0,
+                    x1: e.x1,
+                    y0: e.y0,
+                    y1: e.y1,
+                });
+            }
+        }
+        last = dir;
+    }
+    true
+}
+
+/// Few chains: sort them by their left sides; compare each chain's neighbouring edges, and
+/// each pair of chains whose boxes overlap edge by edge, walking both from left to right
+/// (the edges of a chain, in x order, cover its x range one after another, so the edges
+/// of one chain meeting an edge of the other form a window that only moves right).
+fn scan_chains(
+    boxes: &[EdgeBox],
+    chains: &mut [Chain],
+    mut budget: usize,
+    mut visit: impl FnMut(&EdgeBox, &EdgeBox) -> bool,
+) -> Scan {
+    // the k-th edge of a chain from the left
+    let edge = |c: &Chain, k: u32| {
+        let i = if c.falling {
+            c.start + c.len - 1 - k
+        } else {
+            c.start + k
+        };
+        &boxes[i as usize]
+    };
+    let mut spend = |n: usize| {
+        let ok = budget >= n;
+        budget = budget.saturating_sub(n);
+        ok
+    };
+    for c in chains.iter() {
+        if !spend(c.len as usize) {
+            return Scan::OutOfBudget;
+        }
+        for k in 1..c.len {
+            let (e, f) = (edge(c, k - 1), edge(c, k));
+            if visit(e, f) {
+                return Scan::Stopped;
+            }
+            // the edges on either side of a vertical one share its x
+            if f.x0 == f.x1 && k + 1 < c.len {
+                let g = edge(c, k + 1);
+                if g.y0 <= e.y1 && e.y0 <= g.y1 && visit(e, g) {
+                    return Scan::Stopped;
+                }
+            }
+        }
+    }
+    chains.sort_unstable_by(|s, t| s.x0.total_cmp(&t.x0));
+    for (i, a) in chains.iter().enumerate() {
+        for b in &chains[i + 1..] {
+            if b.x0 > a.x1 {
+                break;
+            }
+            if !spend(1) {
+                return Scan::OutOfBudget;
+            }
+            if b.y0 > a.y1 || a.y0 > b.y1 {
+                continue;
+            }
+            // a's edges from the first reaching b; b's edges from `first` on are those
+            // not ending left of a's current edge
+            let reaching = |c: &Chain, x: f64| {
+                let (mut lo, mut hi) = (0, c.len);
+                while lo < hi {
+                    let mid = lo + (hi - lo) / 2;
+                    if edge(c, mid).x1 < x {
+                        lo = mid + 1;
+                    } else {
+                        hi = mid;
+                    }
+                }
+                lo
+            };
+            let mut first = reaching(b, a.x0.max(b.x0));
+            for k in reaching(a, b.x0)..a.len {
+                let e = edge(a, k);
+                if e.x0 > b.x1 {
+                    break;
+                }
+                while first < b.len && edge(b, first).x1 < e.x0 {
+                    first += 1;
+                }
+                let mut m = first;
+                while m < b.len {
+                    let f = edge(b, m);
+                    if f.x0 > e.x1 {
+                        break;
+                    }
+                    if !spend(1) {
+                        return Scan::OutOfBudget;
+                    }
+                    if f.y0 <= e.y1 && e.y0 <= f.y1 && visit(e, f) {
+                        return Scan::Stopped;
+                    }
+                    m += 1;
+                }
+            }
+        }
+    }
+    Scan::Done
 }
 
 /// A few edges: sort the boxes by their left sides and compare each with the boxes that
@@ -442,6 +621,99 @@ mod tests {
             })
             .collect();
         assert!(!marks_like_brute_force(&[&ring]));
+    }
+
+    /// Two edges by their start nodes, the lower first.
+    type Pair = (u32, u32);
+
+    /// Every pair of edges whose boxes overlap, by brute force, as sorted index pairs of
+    /// nodes; the same as `scan` visits them (each pair once or more); and whether it took
+    /// the chain scan.
+    fn overlapping_pairs(rings: &[Vec<(f64, f64)>]) -> (Vec<Pair>, Vec<Pair>, bool) {
+        let refs: Vec<&[(f64, f64)]> = rings.iter().map(Vec::as_slice).collect();
+        let (pool, starts) = build(&refs);
+        let mut scratch = PruneScratch::default();
+        collect_boxes(&pool, &starts, &mut scratch.boxes, None);
+        let boxes = scratch.boxes.clone();
+        let chained = boxes.len() > SMALL && collect_chains(&pool, &boxes, &mut scratch.chains);
+        let overlap =
+            |e: &EdgeBox, f: &EdgeBox| f.x0 <= e.x1 && e.x0 <= f.x1 && f.y0 <= e.y1 && e.y0 <= f.y1;
+        let pair = |e: &EdgeBox, f: &EdgeBox| (e.from.0.min(f.from.0), e.from.0.max(f.from.0));
+        let mut expected = Vec::new();
+        for (i, e) in boxes.iter().enumerate() {
+            for f in &boxes[i + 1..] {
+                if overlap(e, f) {
+                    expected.push(pair(e, f));
+                }
+            }
+        }
+        let mut seen = Vec::new();
+        let done = scan(&pool, &mut scratch, 1 << 20, |e, f| {
+            assert!(overlap(e, f), "visited a pair whose boxes do not overlap");
+            seen.push(pair(e, f));
+            false
+        });
+        assert_eq!(done, Scan::Done);
+        expected.sort_unstable();
+        seen.sort_unstable();
+        seen.dedup();
+        (expected, seen, chained)
+    }
+
+    #[test]
+    fn every_scan_visits_every_overlapping_pair() {
+        let mut seed = 0x9e37_79b9_7f4a_7c15_u64;
+        let mut next = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        // wobbly circles (few long chains: the chain scan), with wobbly holes, and random
+        // zigzags (a chain per edge: the sorted scan and the grid); grid-aligned
+        // coordinates give vertical edges and boxes touching at their sides
+        let mut chain_scans = 0;
+        for round in 0..60 {
+            let mut rings = Vec::new();
+            let count = 1 + round % 4;
+            for r in 0..count {
+                let n = 8 + (next() * 600.0) as usize;
+                let waves = 1.0 + (next() * 6.0).floor();
+                let radius = if r == 0 { 10.0 } else { 1.0 + next() };
+                let (cx, cy) = if r == 0 {
+                    (0.0, 0.0)
+                } else {
+                    (next() * 8.0 - 4.0, next() * 8.0 - 4.0)
+                };
+                let snap = |v: f64| {
+                    if round % 3 == 0 {
+                        (v * 4.0).round() / 4.0
+                    } else {
+                        v
+                    }
+                };
+                let ring: Vec<(f64, f64)> = (0..n)
+                    .map(|k| {
+                        let t = k as f64 * core::f64::consts::TAU / n as f64;
+                        let rho = radius * (1.0 + 0.3 * (waves * t).sin());
+                        (snap(cx + rho * t.cos()), snap(cy + rho * t.sin()))
+                    })
+                    .collect();
+                rings.push(ring);
+            }
+            if round % 5 == 4 {
+                let n = 10 + (next() * 600.0) as usize;
+                rings.push(
+                    (0..n)
+                        .map(|_| (next() * 20.0 - 10.0, next() * 20.0 - 10.0))
+                        .collect(),
+                );
+            }
+            let (expected, seen, chained) = overlapping_pairs(&rings);
+            assert_eq!(seen, expected, "round {round}");
+            chain_scans += usize::from(chained);
+        }
+        assert!((20..55).contains(&chain_scans), "{chain_scans} chain scans");
     }
 
     #[test]

@@ -192,7 +192,8 @@ impl<'a> Clipper<'a> {
         loop {
             let reflex = turn(cx, n) != Orientation::CounterClockwise;
             cx.pool.get_mut(n).reflex = reflex;
-            cx.pool.get_mut(n).not_ear = false;
+            // a reflex tip is no ear: the walk steps over it at once
+            cx.pool.get_mut(n).not_ear = reflex;
             if reflex {
                 cx.clip.reflex.push(n);
             }
@@ -251,7 +252,12 @@ impl<'a> Clipper<'a> {
                 }
                 self.cx.pool.get_mut(ear).not_ear = true;
             }
+            // On to the next tip not marked "not an ear": until a cut, nothing the loop
+            // looks at changes, so marked tips need no more than a step.
             ear = self.cx.pool.next(ear);
+            while ear != stop && self.cx.pool.get(ear).not_ear {
+                ear = self.cx.pool.next(ear);
+            }
             if ear == stop {
                 if !rescanned && self.may_rescan() {
                     // A lap without an ear. "Not an ear" holds until a neighbour changes,
@@ -553,6 +559,9 @@ impl<'a> Clipper<'a> {
     /// Records whether live node `n` is reflex, keeping the counts and the index.
     fn set_reflex(&mut self, n: NodeId, reflex: bool) {
         let node = self.cx.pool.get_mut(n);
+        // a reflex tip is no ear (the fast walk steps over it); a convex one was just
+        // touched, which cleared the mark
+        node.not_ear |= reflex;
         if node.reflex != reflex {
             node.reflex = reflex;
             if reflex {

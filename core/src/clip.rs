@@ -45,7 +45,7 @@ const GRID_MIN_REFLEX: usize = 32;
 pub(crate) struct ClipScratch {
     /// Reflex (or straight) nodes of the polygon being clipped; entries go stale when a node
     /// turns convex or is cut, and are skipped then.
-    reflex: Vec<NodeId>,
+    reflex: Vec<(NodeId, Point)>,
     /// The same nodes by grid cell, when there are many (see `GRID_MIN_REFLEX`).
     cells: Cells,
     /// Quality strategy: candidate ears by angle at the tip, with the node's stamp and the
@@ -195,7 +195,7 @@ impl<'a> Clipper<'a> {
             // a reflex tip is no ear: the walk steps over it at once
             cx.pool.get_mut(n).not_ear = reflex;
             if reflex {
-                cx.clip.reflex.push(n);
+                cx.clip.reflex.push((n, cx.pool.p(n)));
             }
             len += 1;
             n = cx.pool.next(n);
@@ -207,7 +207,7 @@ impl<'a> Clipper<'a> {
         let indexed = reflex_count >= GRID_MIN_REFLEX;
         if indexed {
             let (pool, clip) = (&cx.pool, &mut cx.clip);
-            clip.cells.build(&clip.reflex, |n| pool.p(n), pool.len());
+            clip.cells.build(&clip.reflex, pool.len());
         }
         (
             Clipper {
@@ -413,17 +413,21 @@ impl<'a> Clipper<'a> {
         mut test: impl FnMut(NodeId, Point) -> bool,
     ) -> bool {
         let pool = &self.cx.pool;
-        let lo = Point::new(a.x.min(b.x).min(c.x), a.y.min(b.y).min(c.y));
-        let hi = Point::new(a.x.max(b.x).max(c.x), a.y.max(b.y).max(c.y));
-        let live = |r: NodeId| {
-            let node = pool.get(r);
-            let q = node.p;
-            let near = q.x >= lo.x
+        // coordinates are finite: plain comparisons, without `f64::min`'s NaN handling
+        let min = |s: f64, t: f64| if t < s { t } else { s };
+        let max = |s: f64, t: f64| if t > s { t } else { s };
+        let lo = Point::new(min(min(a.x, b.x), c.x), min(min(a.y, b.y), c.y));
+        let hi = Point::new(max(max(a.x, b.x), c.x), max(max(a.y, b.y), c.y));
+        let near = |q: Point| {
+            q.x >= lo.x
                 && q.x <= hi.x
                 && !(PLANTED_BUG && q.x == hi.x)
                 && q.y >= lo.y
-                && q.y <= hi.y;
-            (!node.removed && node.reflex && near).then_some(q)
+                && q.y <= hi.y
+        };
+        let live = |r: NodeId| {
+            let node = pool.get(r);
+            !node.removed && node.reflex
         };
         if self.indexed {
             let cells = &self.cx.clip.cells;
@@ -432,16 +436,14 @@ impl<'a> Clipper<'a> {
             cells.any_in_box(lo, hi, |r, q| {
                 debug_assert!(!pool.get(r).removed && pool.get(r).reflex);
                 test(r, q)
-            }) || cells
-                .extra()
-                .iter()
-                .any(|&r| live(r).is_some_and(|q| test(r, q)))
+            }) || cells.extra().iter().any(|&r| {
+                let q = pool.p(r);
+                near(q) && live(r) && test(r, q)
+            })
         } else {
-            self.cx
-                .clip
-                .reflex
-                .iter()
-                .any(|&r| live(r).is_some_and(|q| test(r, q)))
+            // positions are listed with the nodes: most fail the box test without a look
+            // at the node
+            (self.cx.clip.reflex.iter()).any(|&(r, q)| near(q) && live(r) && test(r, q))
         }
     }
 
@@ -473,7 +475,7 @@ impl<'a> Clipper<'a> {
             return;
         }
         let pool = &self.cx.pool;
-        reflex.retain(|&r| {
+        reflex.retain(|&(r, _)| {
             let node = pool.get(r);
             !node.removed && node.reflex
         });
@@ -568,7 +570,8 @@ impl<'a> Clipper<'a> {
                 // only possible around removed walls: list it again
                 self.epoch = self.epoch.wrapping_add(1);
                 self.reflex_count += 1;
-                self.cx.clip.reflex.push(n);
+                let p = self.cx.pool.p(n);
+                self.cx.clip.reflex.push((n, p));
                 if self.indexed {
                     self.cx.clip.cells.add(n);
                 }
@@ -591,7 +594,7 @@ impl<'a> Clipper<'a> {
     fn try_fan(&mut self, any: NodeId) -> bool {
         let pool = &self.cx.pool;
         let center = if self.reflex_count == 1 {
-            match self.cx.clip.reflex.iter().copied().find(|&r| {
+            match self.cx.clip.reflex.iter().map(|&(r, _)| r).find(|&r| {
                 let node = pool.get(r);
                 !node.removed && node.reflex
             }) {

@@ -233,20 +233,21 @@ pub(crate) struct Cells {
     /// listed at most once per build).
     slot: Vec<u32>,
     extra: Vec<NodeId>,
+    /// Scratch of `build`: each node's cell.
+    cell_of: Vec<u32>,
 }
 
 impl Cells {
-    /// Rebuilds the grid over `nodes` (at positions given by `pos`), about one node per
-    /// cell; `nodes_total` bounds every node id that will be seen.
-    pub fn build(&mut self, nodes: &[NodeId], pos: impl Fn(NodeId) -> Point, nodes_total: usize) {
+    /// Rebuilds the grid over `nodes` (with their positions), about one node per cell;
+    /// `nodes_total` bounds every node id that will be seen.
+    pub fn build(&mut self, nodes: &[(NodeId, Point)], nodes_total: usize) {
         self.extra.clear();
         self.entries.clear();
         if self.slot.len() < nodes_total {
             self.slot.resize(nodes_total, NONE);
         }
         let (mut x0, mut y0, mut x1, mut y1) = (f64::MAX, f64::MAX, f64::MIN, f64::MIN);
-        for &n in nodes {
-            let p = pos(n);
+        for &(_, p) in nodes {
             (x0, y0, x1, y1) = (x0.min(p.x), y0.min(p.y), x1.max(p.x), y1.max(p.y));
         }
         let count = nodes.len().max(1);
@@ -260,8 +261,10 @@ impl Cells {
         let cells = nx * ny;
         self.start.clear();
         self.start.resize(cells + 2, 0);
-        for &n in nodes {
-            let c = self.cell(pos(n));
+        self.cell_of.clear();
+        for &(_, p) in nodes {
+            let c = self.cell(p);
+            self.cell_of.push(c as u32);
             self.start[c + 2] += 1;
         }
         for c in 2..cells + 2 {
@@ -269,12 +272,12 @@ impl Cells {
         }
         self.entries
             .resize(nodes.len(), (NodeId(0), Point::new(0.0, 0.0)));
-        for &n in nodes {
-            let c = self.cell(pos(n));
-            let at = self.start[c + 1];
-            self.entries[at as usize] = (n, pos(n));
+        for (&(n, p), &c) in nodes.iter().zip(&self.cell_of) {
+            let cursor = &mut self.start[c as usize + 1];
+            let at = *cursor;
+            *cursor += 1;
+            self.entries[at as usize] = (n, p);
             self.slot[n.idx()] = at;
-            self.start[c + 1] += 1;
         }
         self.start.truncate(cells + 1);
     }
@@ -410,7 +413,8 @@ mod tests {
         let pts = [p(0., 0.), p(1., 1.), p(2., 2.), p(3., 3.), p(0., 3.)];
         let nodes: Vec<NodeId> = (0..5).map(NodeId).collect();
         let mut cells = Cells::default();
-        cells.build(&nodes, |n| pts[n.idx()], 5);
+        let listed: Vec<(NodeId, Point)> = nodes.iter().map(|&n| (n, pts[n.idx()])).collect();
+        cells.build(&listed, 5);
         let found = |cells: &Cells, lo: Point, hi: Point| {
             let mut v = Vec::new();
             cells.any_in_box(lo, hi, |n, _| {

@@ -363,7 +363,9 @@ fn sort_by_left(boxes: &mut Vec<EdgeBox>, merged: &mut Vec<EdgeBox>, runs: &mut 
         runs.push(j as u32);
         i = j;
     }
-    // merge neighbouring runs pairwise until one is left
+    // merge neighbouring runs pairwise until one is left, back and forth between the
+    // buffers
+    let mut swapped = false;
     while runs.len() > 1 {
         merged.clear();
         let mut start = 0;
@@ -389,6 +391,14 @@ fn sort_by_left(boxes: &mut Vec<EdgeBox>, merged: &mut Vec<EdgeBox>, runs: &mut 
         }
         runs.truncate(runs.len().div_ceil(2));
         core::mem::swap(boxes, merged);
+        swapped = !swapped;
+    }
+    if swapped {
+        // each buffer keeps its own capacity, so that a warmed-up triangulator never
+        // grows one again
+        core::mem::swap(boxes, merged);
+        boxes.clear();
+        boxes.extend_from_slice(merged);
     }
 }
 
@@ -536,6 +546,16 @@ fn segments_meet(a: Point, b: Point, c: Point, d: Point) -> bool {
 mod tests {
     use super::*;
 
+    /// A seeded xorshift generator: tests need the same numbers every run.
+    fn xorshift(mut seed: u64) -> impl FnMut() -> u64 {
+        move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed
+        }
+    }
+
     /// Builds a pool from rings of (x, y) and returns it with one start node per ring.
     fn build(rings: &[&[(f64, f64)]]) -> (Pool, Vec<NodeId>) {
         Pool::from_rings(rings)
@@ -647,13 +667,8 @@ mod tests {
             &[(0., 5.), (3., 7.), (3., 3.)]
         ]));
         // seeded pseudo-random rings, few and many edges (the sorted scan and the grid)
-        let mut seed = 0x2545_f491_4f6c_dd1d_u64;
-        let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 40) as f64 / f64::from(1u32 << 24) * 100.0
-        };
+        let mut random = xorshift(0x2545_f491_4f6c_dd1d);
+        let mut next = || (random() >> 40) as f64 / f64::from(1u32 << 24) * 100.0;
         // two 400-gons crossing each other: the grid finishes
         assert!(marks_like_brute_force(&[
             &circle(400, 10.0, 0.0),
@@ -680,13 +695,7 @@ mod tests {
 
     #[test]
     fn natural_merge_sort_sorts() {
-        let mut seed = 0x1234_5678_9abc_def1_u64;
-        let mut next = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            seed
-        };
+        let mut next = xorshift(0x1234_5678_9abc_def1);
         let (mut merged, mut runs) = (Vec::new(), Vec::new());
         for len in [0, 1, 2, 3, 7, 40, 41, 200, 513] {
             for shape in 0..4 {
@@ -764,13 +773,8 @@ mod tests {
 
     #[test]
     fn every_scan_visits_every_overlapping_pair() {
-        let mut seed = 0x9e37_79b9_7f4a_7c15_u64;
-        let mut next = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut random = xorshift(0x9e37_79b9_7f4a_7c15);
+        let mut next = move || (random() >> 11) as f64 / (1u64 << 53) as f64;
         // wobbly circles (few long chains: the chain scan), with wobbly holes, and random
         // zigzags (a chain per edge: the sorted scan and the grid); grid-aligned
         // coordinates give vertical edges and boxes touching at their sides

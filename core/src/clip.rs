@@ -226,7 +226,9 @@ impl<'a> Clipper<'a> {
 
     /// The paper's high-performance walk.
     fn fast(&mut self, start: NodeId) -> Result<(), Error> {
-        let mut ear = start;
+        // the walk ends a lap at `stop`, so it must be on the ring: the quality strategy
+        // hands over to this walk after a repair, which may have removed its node
+        let mut ear = self.live(start);
         let mut stop = ear;
         let mut rescanned = false;
         while self.len > 3 {

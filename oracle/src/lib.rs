@@ -18,6 +18,8 @@
 //! - `fuzz`: the bodies of the cargo-fuzz targets, so stable tests can replay their corpus.
 //! - `replay`: the regression corpus through polytri in every strategy, precision and
 //!   rotation, judged here (`oracle/tests/corpus.rs`'s snapshots, `polytri replay`).
+//! - [`series`]: generated inputs from 10³ to 10⁶ vertices for the scaling benchmarks
+//!   (`cargo bench`, `polytri bench --scaling`).
 //!
 //! Nothing here shares predicates with `polytri`: the oracle has its own exact arithmetic
 //! (`exact`, after Shewchuk).
@@ -36,6 +38,7 @@ mod metrics;
 pub mod peers;
 pub mod precision;
 pub mod replay;
+pub mod series;
 pub mod shrink;
 pub mod strategy;
 

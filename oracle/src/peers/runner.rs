@@ -55,6 +55,11 @@ impl Implementation {
         !matches!(self, Implementation::Peer(_))
     }
 
+    /// Whether this makes triangles: all but [`PolytriCheck`](Self::PolytriCheck).
+    pub const fn triangulates(self) -> bool {
+        !matches!(self, Implementation::PolytriCheck)
+    }
+
     /// The kebab-case name, as [`Display`](fmt::Display) writes and [`FromStr`] reads it.
     pub const fn name(self) -> &'static str {
         match self {
@@ -126,6 +131,11 @@ impl Prepared {
     /// The input this was prepared from.
     pub fn input(&self) -> &Input {
         &self.input
+    }
+
+    /// How many polygons (outer rings with their holes) the input has, as earcut gets them.
+    pub fn polygon_count(&self) -> usize {
+        self.polygons.len()
     }
 }
 

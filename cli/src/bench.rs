@@ -7,13 +7,18 @@
 //! enough to last about a millisecond, so the timer's resolution does not matter; the
 //! median of the samples is reported.
 //!
-//! The table prints as aligned text, as Markdown (`--markdown`, the README's tables) or as
-//! JSON; `--per-second` turns times into triangles per second (the paper's Table 1).
+//! Three reports: the default table of medians and ratios (`--per-second` turns times into
+//! triangles per second, the paper's Table 1), and with `--scaling` the generated series of
+//! [`polytri_oracle::series`] with fitted growth exponents and log-log plots ([`scaling`]).
+//! Each prints as aligned text, as Markdown (`--markdown`, the README's tables) or as JSON.
+
+mod scaling;
 
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 use polytri_oracle::peers::{Implementation, Peer, Prepared, Runner};
+use polytri_oracle::series::Series;
 use polytri_oracle::{Input, Nesting, Role};
 use serde::Serialize;
 
@@ -63,10 +68,16 @@ once.
 
 --per-second: triangles per second instead (in millions; the input's triangle count, as \
 polytri-fast makes it, over each implementation's median time, so rates compare like \
-times), and in parentheses the rate over the fastest peer's (above 1: polytri is faster).")]
+times), and in parentheses the rate over the fastest peer's (above 1: polytri is faster).
+
+--scaling: the generated series (random polygon, star, circles, comb) at 10^3 to 10^6 \
+vertices instead of FILES; a table of medians, the growth exponent of every implementation \
+per series (least squares of log time on log vertices) and, with --out, a log-log plot per \
+series (scaling-SERIES.svg). An implementation whose next run is predicted (from its two \
+largest sizes so far) to exceed 3 s is skipped at that size and above, and said so.")]
 pub struct Args {
     /// Inputs: rings JSON, shapes JSON, GeoJSON or WKT
-    #[arg(value_name = "FILES", conflicts_with = "paper")]
+    #[arg(value_name = "FILES", conflicts_with_all = ["paper", "scaling"])]
     pub files: Vec<PathBuf>,
 
     /// Peers to compare with, comma-separated [default: all]
@@ -83,7 +94,8 @@ pub struct Args {
     #[arg(long, value_name = "S", default_value_t = 1.0)]
     pub seconds: f64,
 
-    /// A quick look: 0.05 s per input, at least 3 samples each
+    /// A quick look: 0.05 s per input, at least 3 samples each (with --scaling: sizes
+    /// 10^3 to 10^4 only)
     #[arg(long)]
     pub quick: bool,
 
@@ -94,6 +106,24 @@ pub struct Args {
     /// Triangles per second (millions) instead of milliseconds
     #[arg(long)]
     pub per_second: bool,
+
+    /// The generated scaling series instead of FILES (see below)
+    #[arg(long)]
+    pub scaling: bool,
+
+    /// With --scaling: the series to run, comma-separated [default: all]
+    #[arg(long, value_delimiter = ',', value_name = "SERIES", requires = "scaling",
+          value_parser = parse_series)]
+    pub series: Option<Vec<Series>>,
+
+    /// With --scaling: the sizes in vertices, comma-separated [default: 10^3 to 10^6 by
+    /// half decades]
+    #[arg(long, value_delimiter = ',', value_name = "N", requires = "scaling")]
+    pub sizes: Option<Vec<usize>>,
+
+    /// With --scaling: write a log-log plot per series here, as scaling-SERIES.svg
+    #[arg(long, value_name = "DIR", requires = "scaling")]
+    pub out: Option<PathBuf>,
 
     /// Print the tables as Markdown (as in the README)
     #[arg(long, conflicts_with = "json")]
@@ -131,6 +161,10 @@ fn parse_polytri(s: &str) -> Result<Implementation, String> {
         .ok_or_else(|| {
             format!("unknown polytri configuration '{s}' (known: fast, lenient, quality, check)")
         })
+}
+
+fn parse_series(s: &str) -> Result<Series, String> {
+    s.parse()
 }
 
 /// One implementation's result on one input.
@@ -192,6 +226,9 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     } else {
         Style::Text
     };
+    if args.scaling {
+        return scaling::run(args, &implementations, budget, min_samples, style);
+    }
     let inputs = load_inputs(&args.files, args.paper)?;
     let mut rows = Vec::with_capacity(inputs.len());
     for (k, (name, input)) in inputs.iter().enumerate() {

@@ -1,7 +1,7 @@
 //! `polytri bench` end to end: the tables' shape on small inputs, never their timings.
 
 use std::fs;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use serde_json::Value;
@@ -192,10 +192,61 @@ fn per_second_markdown_is_the_papers_table() {
 }
 
 #[test]
+fn quick_scaling_prints_medians_and_exponents_and_plots_each_series() {
+    let dir = scratch("scaling");
+    let (text, stderr) = run(&[
+        "--scaling",
+        "--sizes",
+        "200,400,800",
+        "--series",
+        "circles,comb",
+        "--out",
+        dir.to_str().expect("UTF-8 path"),
+    ]);
+    for series in ["circles", "comb"] {
+        let path = dir.join(format!("scaling-{series}.svg"));
+        let svg = fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path:?}: {e}"));
+        assert!(svg.starts_with("<svg"), "{}", &svg[..80.min(svg.len())]);
+        assert!(svg.trim_end().ends_with("</svg>"));
+        for text in ["vertices", "polytri-fast (n^", "spade (n^"] {
+            assert!(svg.contains(text), "{series}: no {text:?} in the plot");
+        }
+        assert!(
+            stderr.contains(&format!("{series}-800")),
+            "progress: {stderr}"
+        );
+    }
+    let (medians, exponents) = text
+        .split_once("growth exponent")
+        .expect("an exponent table after the medians");
+    let medians: Vec<&str> = medians.lines().filter(|l| !l.is_empty()).collect();
+    assert!(medians[0].starts_with("series"), "{}", medians[0]);
+    assert!(medians[0].contains("polytri-check ms"), "{}", medians[0]);
+    assert_eq!(
+        medians.len(),
+        1 + 2 * 3,
+        "a line per series and size:\n{text}"
+    );
+    for line in exponents.lines().filter(|l| l.starts_with("c")) {
+        let cells: Vec<&str> = line.split_whitespace().collect();
+        // every implementation ran at three sizes: an exponent each
+        assert_eq!(cells.len(), 1 + 9, "{line}");
+        for cell in &cells[1..] {
+            let k: f64 = cell
+                .parse()
+                .unwrap_or_else(|_| panic!("{cell:?} in {line}"));
+            assert!(k.is_finite(), "{line}");
+        }
+    }
+    assert_eq!(exponents.lines().filter(|l| l.starts_with("c")).count(), 2);
+}
+
+#[test]
 fn unknown_peer_is_a_usage_error() {
     for args in [
         ["bench", "--peers", "triangle"],
         ["bench", "--polytri", "slow"],
+        ["bench", "--series", "square"],
     ] {
         let out = Command::new(env!("CARGO_BIN_EXE_polytri"))
             .args(args)
@@ -207,4 +258,15 @@ fn unknown_peer_is_a_usage_error() {
             "{args:?}"
         );
     }
+}
+
+#[test]
+fn files_and_scaling_exclude_each_other() {
+    let building = fixture("building");
+    let out = Command::new(env!("CARGO_BIN_EXE_polytri"))
+        .args(["bench", "--scaling"])
+        .arg(Path::new(&building))
+        .output()
+        .expect("run polytri bench");
+    assert_eq!(out.status.code(), Some(2));
 }

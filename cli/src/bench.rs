@@ -73,7 +73,7 @@ times), and in parentheses the rate over the fastest peer's (above 1: polytri is
 --scaling: the generated series (random polygon, star, circles, comb) at 10^3 to 10^6 \
 vertices instead of FILES; a table of medians, the growth exponent of every implementation \
 per series (least squares of log time on log vertices) and, with --out, a log-log plot per \
-series (scaling-SERIES.svg). An implementation whose next run is predicted (from its two \
+series (scaling-SERIES.svg). An implementation whose next run is predicted (from its three \
 largest sizes so far) to exceed 3 s is skipped at that size and above, and said so.")]
 pub struct Args {
     /// Inputs: rings JSON, shapes JSON, GeoJSON or WKT

@@ -199,18 +199,15 @@ fn with_skipped(
     row
 }
 
-/// The time of one run at `vertices`, extrapolated from the two largest sizes so far (at
-/// least linear growth; from one size, linear); `None` before any.
+/// The time of one run at `vertices`, extrapolated from the largest size so far with the
+/// growth fitted over the last three sizes (at least linear; from one size, linear);
+/// `None` before any. Three sizes rather than two: one noisy median on a busy machine
+/// should not skip an implementation that would have run.
 fn predicted_seconds(history: &[(f64, f64)], vertices: f64) -> Option<f64> {
-    match history {
-        [] => None,
-        [(v, t)] => Some(t * vertices / v),
-        [.., (v1, t1), (v2, t2)] => {
-            let slope = ((t2 / t1).ln() / (v2 / v1).ln()).max(1.0);
-            let slope = if slope.is_finite() { slope } else { 1.0 };
-            Some(t2 * (vertices / v2).powf(slope))
-        }
-    }
+    let &(v, t) = history.last()?;
+    let recent = &history[history.len().saturating_sub(3)..];
+    let slope = fit_exponent(recent).map_or(1.0, |k| k.max(1.0));
+    Some(t * (vertices / v).powf(slope))
 }
 
 /// The least-squares slope of `ln t` against `ln v` over `(v, t)` points; `None` below two
@@ -384,5 +381,10 @@ mod tests {
         // faster than linear so far (noise): still predicted linear
         let flat = predicted_seconds(&[(1e3, 0.01), (1e4, 0.01)], 1e5).expect("two sizes");
         assert!((flat - 0.1).abs() < 1e-12, "{flat}");
+        // one slow median among three sizes moves the growth less than between two
+        let noisy = [(1e3, 0.001), (1e4, 0.01), (1e5, 0.2)];
+        let three = predicted_seconds(&noisy, 1e6).expect("three sizes");
+        let two = predicted_seconds(&noisy[1..], 1e6).expect("two sizes");
+        assert!(2.0 < three && three < two, "{three} {two}");
     }
 }

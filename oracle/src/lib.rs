@@ -43,5 +43,23 @@ pub mod shrink;
 pub mod strategy;
 
 pub use check::{check, check_with, CdtComparison, Check, CheckOptions, Verdict};
+
+/// The item of `all` whose `name` is `s` (trimmed, any case) — the `FromStr` of the
+/// harness's named enums; the error lists the known names after `"unknown {what}"`.
+pub(crate) fn by_name<T: Copy>(
+    s: &str,
+    all: &[T],
+    name: impl Fn(T) -> &'static str,
+    what: &str,
+) -> Result<T, String> {
+    let wanted = s.trim();
+    all.iter()
+        .copied()
+        .find(|&item| name(item).eq_ignore_ascii_case(wanted))
+        .ok_or_else(|| {
+            let names: Vec<_> = all.iter().map(|&item| name(item)).collect();
+            format!("unknown {what} '{s}' (known: {})", names.join(", "))
+        })
+}
 pub use gen::{generate, Case, Family, Params};
 pub use input::{Input, Nesting, Role};

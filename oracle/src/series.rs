@@ -88,13 +88,7 @@ impl FromStr for Series {
     type Err = String;
 
     fn from_str(s: &str) -> Result<Self, Self::Err> {
-        Series::ALL
-            .into_iter()
-            .find(|series| series.name().eq_ignore_ascii_case(s.trim()))
-            .ok_or_else(|| {
-                let names: Vec<_> = Series::ALL.iter().map(|s| s.name()).collect();
-                format!("unknown series '{s}' (known: {})", names.join(", "))
-            })
+        crate::by_name(s, &Series::ALL, Series::name, "series")
     }
 }
 

@@ -6,11 +6,19 @@
 //! round), so machine noise falls on all of them alike; each sample repeats a run often
 //! enough to last about a millisecond, so the timer's resolution does not matter; the
 //! median of the samples is reported.
+//!
+//! Three reports: the default table of medians and ratios (`--per-second` turns times into
+//! triangles per second, the paper's Table 1), and with `--scaling` the generated series of
+//! [`polytri_oracle::series`] with fitted growth exponents and log-log plots ([`scaling`]).
+//! Each prints as aligned text, as Markdown (`--markdown`, the README's tables) or as JSON.
+
+mod scaling;
 
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 use polytri_oracle::peers::{Implementation, Peer, Prepared, Runner};
+use polytri_oracle::series::Series;
 use polytri_oracle::{Input, Nesting, Role};
 use serde::Serialize;
 
@@ -45,18 +53,31 @@ const SAMPLE: Duration = Duration::from_millis(1);
 #[derive(Debug, clap::Args)]
 #[command(after_help = "\
 Without FILES: earcut's benchmark fixtures (building, dude, water, water-huge, \
-water-huge2, water3) and the paper datasets of corpus/datasets/, found from the current \
-directory upwards or from where polytri was built.
+water-huge2, water3) and the paper datasets of corpus/datasets/ (only the datasets with \
+--paper), found from the current directory upwards or from where polytri was built.
 
 Columns: per implementation the median time of one run in milliseconds and, in \
 parentheses, its ratio to the fastest peer on that input (polytri columns too: below 1 \
-means polytri is faster than every peer). polytri-fast is strict (the input is checked \
-for crossings), polytri-lenient skips that check. The last row is the geometric mean of \
-the ratios. Files with several polygons go to earcut and polytri one polygon at a time, \
-to the others all at once.")]
+means polytri is faster than every peer). polytri-fast is strict: it refuses crossing or \
+touching edges. polytri-lenient repairs them instead of refusing; it still sweeps the edges \
+to find them, and runs extra passes on input that has some. polytri-check is strict mode's \
+input check alone (loading, the edge sweep, nesting), no triangulation: compare it with \
+polytri-fast for the check's share. The last row is the geometric mean of the ratios. Files \
+with several polygons go to earcut and polytri one polygon at a time, to the others all at \
+once.
+
+--per-second: triangles per second instead (in millions; the input's triangle count, as \
+polytri-fast makes it, over each implementation's median time, so rates compare like \
+times), and in parentheses the rate over the fastest peer's (above 1: polytri is faster).
+
+--scaling: the generated series (random polygon, star, circles, comb) at 10^3 to 10^6 \
+vertices instead of FILES; a table of medians, the growth exponent of every implementation \
+per series (least squares of log time on log vertices) and, with --out, a log-log plot per \
+series (scaling-SERIES.svg). An implementation whose next run is predicted (from its three \
+largest sizes so far) to exceed 3 s is skipped at that size and above, and said so.")]
 pub struct Args {
     /// Inputs: rings JSON, shapes JSON, GeoJSON or WKT
-    #[arg(value_name = "FILES")]
+    #[arg(value_name = "FILES", conflicts_with_all = ["paper", "scaling"])]
     pub files: Vec<PathBuf>,
 
     /// Peers to compare with, comma-separated [default: all]
@@ -64,20 +85,85 @@ pub struct Args {
           value_parser = parse_peer)]
     pub peers: Option<Vec<Peer>>,
 
+    /// polytri configurations, comma-separated: fast, lenient, quality, check [default: all]
+    #[arg(long, value_delimiter = ',', value_name = "CONFIGS",
+          value_parser = parse_polytri)]
+    pub polytri: Option<Vec<Implementation>>,
+
     /// Time budget per input, shared by all implementations
     #[arg(long, value_name = "S", default_value_t = 1.0)]
     pub seconds: f64,
 
-    /// A quick look: 0.05 s per input, at least 3 samples each
+    /// A quick look: 0.05 s per input, at least 3 samples each (with --scaling: sizes
+    /// 10^3 to 10^4 only)
     #[arg(long)]
     pub quick: bool,
+
+    /// Only the paper datasets (Table 1 of Kotsarenko 2024 and the larger CJK inputs)
+    #[arg(long)]
+    pub paper: bool,
+
+    /// Triangles per second (millions) instead of milliseconds
+    #[arg(long)]
+    pub per_second: bool,
+
+    /// The generated scaling series instead of FILES (see below)
+    #[arg(long)]
+    pub scaling: bool,
+
+    /// With --scaling: the series to run, comma-separated [default: all]
+    #[arg(long, value_delimiter = ',', value_name = "SERIES", requires = "scaling",
+          value_parser = parse_series)]
+    pub series: Option<Vec<Series>>,
+
+    /// With --scaling: the sizes in vertices, comma-separated [default: 10^3 to 10^6 by
+    /// half decades]
+    #[arg(long, value_delimiter = ',', value_name = "N", requires = "scaling")]
+    pub sizes: Option<Vec<usize>>,
+
+    /// With --scaling: write a log-log plot per series here, as scaling-SERIES.svg
+    #[arg(long, value_name = "DIR", requires = "scaling")]
+    pub out: Option<PathBuf>,
+
+    /// Print the tables as Markdown (as in the README)
+    #[arg(long, conflicts_with = "json")]
+    pub markdown: bool,
 
     /// Print the results as JSON on stdout instead of a table
     #[arg(long)]
     pub json: bool,
 }
 
+/// How the tables are printed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Style {
+    /// Columns aligned with spaces.
+    Text,
+    /// Markdown tables.
+    Markdown,
+}
+
 fn parse_peer(s: &str) -> Result<Peer, String> {
+    s.parse()
+}
+
+/// A polytri configuration by its short name (`fast`) or its full one (`polytri-fast`).
+fn parse_polytri(s: &str) -> Result<Implementation, String> {
+    let s = s.trim();
+    let full = if s.starts_with("polytri-") {
+        s.to_owned()
+    } else {
+        format!("polytri-{s}")
+    };
+    Implementation::POLYTRI
+        .into_iter()
+        .find(|imp| imp.name().eq_ignore_ascii_case(&full))
+        .ok_or_else(|| {
+            format!("unknown polytri configuration '{s}' (known: fast, lenient, quality, check)")
+        })
+}
+
+fn parse_series(s: &str) -> Result<Series, String> {
     s.parse()
 }
 
@@ -99,6 +185,8 @@ struct Timing {
 #[derive(Debug, Clone, Serialize)]
 struct Row {
     input: String,
+    /// Polygons (outer rings with their holes).
+    polygons: usize,
     vertices: usize,
     /// polytri-fast's triangle count (or the first implementation's that succeeded).
     triangles: Option<usize>,
@@ -118,7 +206,8 @@ struct Report {
 ///
 /// # Errors
 ///
-/// A [`Failure`] when an input cannot be read or the corpus cannot be found.
+/// A [`Failure`] when an input cannot be read, the corpus cannot be found or a plot cannot
+/// be written.
 pub fn run(args: &Args) -> Result<(), Failure> {
     if !(args.seconds >= 0.0 && args.seconds.is_finite()) {
         return Err(Failure(format!(
@@ -126,17 +215,21 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             args.seconds
         )));
     }
-    let inputs = load_inputs(&args.files)?;
-    let peers = args.peers.clone().unwrap_or_else(|| Peer::ALL.to_vec());
-    let implementations: Vec<Implementation> = Implementation::POLYTRI
-        .into_iter()
-        .chain(peers.into_iter().map(Implementation::Peer))
-        .collect();
+    let implementations = implementations(args);
     let (budget, min_samples) = if args.quick {
         (Duration::from_millis(50), 3)
     } else {
         (Duration::from_secs_f64(args.seconds), 5)
     };
+    let style = if args.markdown {
+        Style::Markdown
+    } else {
+        Style::Text
+    };
+    if args.scaling {
+        return scaling::run(args, &implementations, budget, min_samples, style);
+    }
+    let inputs = load_inputs(&args.files, args.paper)?;
     let mut rows = Vec::with_capacity(inputs.len());
     for (k, (name, input)) in inputs.iter().enumerate() {
         say(format_args!(
@@ -145,7 +238,14 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             inputs.len(),
             input.vertices.len()
         ));
-        rows.push(measure(name, input, &implementations, budget, min_samples));
+        let row = measure(name, input, &implementations, budget, min_samples);
+        for (timing, error) in failures(&row) {
+            say(format_args!(
+                "polytri bench: {name}: {} failed: {error}",
+                timing.implementation
+            ));
+        }
+        rows.push(row);
     }
     let report = Report {
         implementations: implementations.iter().map(ToString::to_string).collect(),
@@ -155,17 +255,50 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         rows,
     };
     if args.json {
-        let text = serde_json::to_string_pretty(&report)
-            .map_err(|e| Failure(format!("cannot write JSON: {e}")))?;
-        println!("{text}");
+        print_json(&report)
     } else {
-        print!("{}", table(&report));
+        print!("{}", table(&report, args.per_second, style));
+        Ok(())
     }
+}
+
+/// The polytri configurations and peers chosen, polytri first.
+fn implementations(args: &Args) -> Vec<Implementation> {
+    let polytri = args
+        .polytri
+        .clone()
+        .unwrap_or_else(|| Implementation::POLYTRI.to_vec());
+    let peers = args.peers.clone().unwrap_or_else(|| Peer::ALL.to_vec());
+    let mut chosen: Vec<Implementation> = Vec::new();
+    for imp in polytri
+        .into_iter()
+        .chain(peers.into_iter().map(Implementation::Peer))
+    {
+        if !chosen.contains(&imp) {
+            chosen.push(imp);
+        }
+    }
+    chosen
+}
+
+/// The implementations that failed on a row's input, with their messages.
+fn failures(row: &Row) -> impl Iterator<Item = (&Timing, &str)> {
+    row.timings
+        .iter()
+        .filter_map(|t| t.error.as_deref().map(|e| (t, e)))
+}
+
+/// Prints `value` as pretty JSON on stdout.
+fn print_json(value: &impl Serialize) -> Result<(), Failure> {
+    let text = serde_json::to_string_pretty(value)
+        .map_err(|e| Failure(format!("cannot write JSON: {e}")))?;
+    println!("{text}");
     Ok(())
 }
 
-/// The inputs by name: the files given, or else the default fixtures and datasets.
-fn load_inputs(files: &[PathBuf]) -> Result<Vec<(String, Input)>, Failure> {
+/// The inputs by name: the files given, or else the default fixtures (unless `paper`) and
+/// datasets.
+fn load_inputs(files: &[PathBuf], paper: bool) -> Result<Vec<(String, Input)>, Failure> {
     let paths: Vec<PathBuf> = if files.is_empty() {
         let corpus = find_corpus().ok_or_else(|| {
             Failure(
@@ -174,7 +307,8 @@ fn load_inputs(files: &[PathBuf]) -> Result<Vec<(String, Input)>, Failure> {
                     .to_owned(),
             )
         })?;
-        FIXTURES
+        let fixtures: &[&str] = if paper { &[] } else { &FIXTURES };
+        fixtures
             .iter()
             .map(|f| corpus.join("earcut/fixtures").join(format!("{f}.json")))
             .chain(
@@ -245,7 +379,7 @@ struct Contestant {
 }
 
 /// Measures every implementation on `input`, round robin, within `budget` (but at least
-/// `min_samples` samples each).
+/// `min_samples` samples each). Failures are in the row's timings, not said.
 fn measure(
     name: &str,
     input: &Input,
@@ -285,15 +419,7 @@ fn measure(
                 .push(began.elapsed().as_secs_f64() / f64::from(c.batch));
         }
     }
-    for c in &contestants {
-        if let Some(error) = &c.error {
-            say(format_args!(
-                "polytri bench: {name}: {} failed: {error}",
-                c.implementation
-            ));
-        }
-    }
-    row(name, input, contestants)
+    row(name, &prepared, contestants)
 }
 
 /// Runs `imp` once to warm up and learn its triangle count, then times one run to choose
@@ -307,7 +433,7 @@ fn calibrate(runner: &mut Runner, imp: Implementation, prepared: &Prepared) -> C
         error: None,
     };
     match runner.run(imp, prepared) {
-        Ok(triangles) => contestant.triangles = Some(triangles),
+        Ok(triangles) => contestant.triangles = imp.triangulates().then_some(triangles),
         Err(e) => {
             contestant.error = Some(e);
             return contestant;
@@ -321,7 +447,7 @@ fn calibrate(runner: &mut Runner, imp: Implementation, prepared: &Prepared) -> C
 }
 
 /// The row of one input: medians and ratios to the fastest peer.
-fn row(name: &str, input: &Input, contestants: Vec<Contestant>) -> Row {
+fn row(name: &str, prepared: &Prepared, contestants: Vec<Contestant>) -> Row {
     let medians: Vec<Option<f64>> = contestants
         .iter()
         .map(|c| c.error.is_none().then(|| median(&c.samples)).flatten())
@@ -351,7 +477,8 @@ fn row(name: &str, input: &Input, contestants: Vec<Contestant>) -> Row {
         .collect();
     Row {
         input: name.to_owned(),
-        vertices: input.vertices.len(),
+        polygons: prepared.polygon_count(),
+        vertices: prepared.input().vertices.len(),
         triangles,
         timings,
     }
@@ -377,42 +504,108 @@ fn geometric_mean(values: impl Iterator<Item = f64>) -> Option<f64> {
 
 /// Milliseconds with four significant digits (at most nine decimals).
 fn format_ms(ms: f64) -> String {
-    let magnitude = if ms > 0.0 { ms.log10().floor() } else { 0.0 };
-    let decimals = (3.0 - magnitude).clamp(0.0, 9.0) as usize;
-    format!("{ms:.decimals$}")
+    format_significant(ms, 4)
+}
+
+/// `x` with `digits` significant digits (at most nine decimals).
+fn format_significant(x: f64, digits: i32) -> String {
+    let magnitude = if x > 0.0 { x.log10().floor() } else { 0.0 };
+    let decimals = (f64::from(digits - 1) - magnitude).clamp(0.0, 9.0) as usize;
+    format!("{x:.decimals$}")
 }
 
 fn format_ratio(ratio: Option<f64>) -> String {
     ratio.map_or_else(|| "(–)".to_owned(), |r| format!("({r:.2}×)"))
 }
 
-/// The report as an aligned text table.
-fn table(report: &Report) -> String {
-    let mut lines: Vec<Vec<String>> = Vec::new();
-    let mut header = vec![
-        "input".to_owned(),
-        "vertices".to_owned(),
-        "triangles".to_owned(),
-    ];
-    header.extend(report.implementations.iter().map(|i| format!("{i} ms")));
-    lines.push(header);
+/// The report as a table: per input its counts, then per implementation its time (or
+/// rate) and ratio, then the fastest peer; the last line the geometric means.
+fn table(report: &Report, per_second: bool, style: Style) -> String {
+    let unit = if per_second { "M tri/s" } else { "ms" };
+    let mut header: Vec<String> = ["input", "polygons", "vertices", "triangles"]
+        .map(str::to_owned)
+        .to_vec();
+    header.extend(report.implementations.iter().map(|i| format!("{i} {unit}")));
+    header.push(FASTEST_PEER.to_owned());
+    let mut lines = vec![header];
     for row in &report.rows {
         let mut line = vec![
             row.input.clone(),
+            row.polygons.to_string(),
             row.vertices.to_string(),
             row.triangles.map_or("–".to_owned(), |t| t.to_string()),
         ];
-        line.extend(row.timings.iter().map(|t| match t.median_ms {
-            Some(ms) => format!("{} {}", format_ms(ms), format_ratio(t.ratio)),
-            None => "failed".to_owned(),
-        }));
+        line.extend(
+            row.timings
+                .iter()
+                .map(|t| cell(t, row.triangles, per_second)),
+        );
+        line.push(fastest_peer(row).unwrap_or("–").to_owned());
         lines.push(line);
     }
-    let mut mean = vec!["geometric mean".to_owned(), String::new(), String::new()];
-    mean.extend(report.geometric_mean.iter().map(|&g| format_ratio(g)));
+    let mut mean = vec!["geometric mean".to_owned()];
+    mean.extend(std::iter::repeat_n(String::new(), 3));
+    mean.extend(
+        report
+            .geometric_mean
+            .iter()
+            .map(|&g| format_ratio(g.map(|g| if per_second { 1.0 / g } else { g }))),
+    );
+    mean.push(String::new());
+    if style == Style::Markdown {
+        mean = mean
+            .into_iter()
+            .map(|c| if c.is_empty() { c } else { format!("**{c}**") })
+            .collect();
+    }
     lines.push(mean);
+    render(&lines, style)
+}
 
-    let columns = lines[0].len();
+/// One implementation's cell: its median time and ratio to the fastest peer, or with
+/// `per_second` the input's `triangles` over that time in millions per second and the
+/// ratio of rates (the inverse).
+fn cell(timing: &Timing, triangles: Option<usize>, per_second: bool) -> String {
+    let Some(ms) = timing.median_ms else {
+        return if timing.error.is_some() && timing.implementation.starts_with("polytri") {
+            "refused".to_owned()
+        } else {
+            "failed".to_owned()
+        };
+    };
+    if !per_second {
+        return format!("{} {}", format_ms(ms), format_ratio(timing.ratio));
+    }
+    match triangles {
+        Some(t) if ms > 0.0 => format!(
+            "{} {}",
+            format_significant(t as f64 / ms / 1e3, 3),
+            format_ratio(timing.ratio.map(|r| 1.0 / r))
+        ),
+        _ => "–".to_owned(),
+    }
+}
+
+/// The name of the fastest peer on a row (ratio 1).
+fn fastest_peer(row: &Row) -> Option<&str> {
+    row.timings
+        .iter()
+        .filter(|t| !t.implementation.starts_with("polytri"))
+        .filter_map(|t| t.ratio.map(|r| (r, t.implementation.as_str())))
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .map(|(_, name)| name)
+}
+
+/// The header of the column that names the fastest peer.
+const FASTEST_PEER: &str = "fastest peer";
+
+/// `lines` (the first the header) as aligned text, names left (the first column and
+/// [`FASTEST_PEER`]) and numbers right, or as a Markdown table.
+fn render(lines: &[Vec<String>], style: Style) -> String {
+    let columns = lines.first().map_or(0, Vec::len);
+    let left: Vec<bool> = (0..columns)
+        .map(|c| c == 0 || lines[0][c] == FASTEST_PEER)
+        .collect();
     let width: Vec<usize> = (0..columns)
         .map(|c| {
             lines
@@ -423,21 +616,40 @@ fn table(report: &Report) -> String {
         })
         .collect();
     let mut out = String::new();
-    for line in &lines {
+    for (k, line) in lines.iter().enumerate() {
         let cells: Vec<String> = line
             .iter()
             .enumerate()
             .map(|(c, cell)| {
                 let pad = " ".repeat(width[c] - cell.chars().count());
-                // names left, numbers right
-                if c == 0 {
+                if left[c] {
                     format!("{cell}{pad}")
                 } else {
                     format!("{pad}{cell}")
                 }
             })
             .collect();
-        out.push_str(cells.join("  ").trim_end());
+        match style {
+            Style::Text => out.push_str(cells.join("  ").trim_end()),
+            Style::Markdown => {
+                out.push_str(&format!("| {} |", cells.join(" | ")));
+                if k == 0 {
+                    let rule: Vec<String> = width
+                        .iter()
+                        .enumerate()
+                        .map(|(c, &w)| {
+                            let dashes = "-".repeat(w.max(3) - usize::from(!left[c]));
+                            if left[c] {
+                                dashes
+                            } else {
+                                format!("{dashes}:")
+                            }
+                        })
+                        .collect();
+                    out.push_str(&format!("\n| {} |", rule.join(" | ")));
+                }
+            }
+        }
         out.push('\n');
     }
     out
@@ -475,7 +687,7 @@ mod tests {
         };
         let row = row(
             "square",
-            &Input::default(),
+            &Prepared::new(&Input::default()),
             vec![
                 contestant(Implementation::PolytriFast, vec![1.0]),
                 contestant(Implementation::Peer(Peer::Earcut), vec![2.0]),
@@ -484,5 +696,41 @@ mod tests {
         );
         let ratios: Vec<_> = row.timings.iter().map(|t| t.ratio).collect();
         assert_eq!(ratios, vec![Some(0.5), Some(1.0), Some(2.0)]);
+        assert_eq!(fastest_peer(&row), Some("earcut"));
+    }
+
+    #[test]
+    fn rates_are_the_inputs_triangles_over_each_time() {
+        let timing = |ms: Option<f64>, ratio: Option<f64>| Timing {
+            implementation: "polytri-fast".to_owned(),
+            median_ms: ms,
+            ratio,
+            triangles: None,
+            samples: 5,
+            error: ms.is_none().then(|| "edges cross".to_owned()),
+        };
+        // 2,000 triangles in 0.5 ms: 4 M/s, twice the fastest peer's rate
+        assert_eq!(
+            cell(&timing(Some(0.5), Some(0.5)), Some(2_000), true),
+            "4.00 (2.00×)"
+        );
+        assert_eq!(
+            cell(&timing(Some(0.5), Some(0.5)), Some(2_000), false),
+            "0.5000 (0.50×)"
+        );
+        assert_eq!(cell(&timing(None, None), Some(2_000), true), "refused");
+    }
+
+    #[test]
+    fn markdown_tables_right_align_numbers() {
+        let lines = vec![
+            vec!["input".to_owned(), "ms".to_owned()],
+            vec!["dude".to_owned(), "0.25".to_owned()],
+        ];
+        assert_eq!(
+            render(&lines, Style::Markdown),
+            "| input |   ms |\n| ----- | ---: |\n| dude  | 0.25 |\n"
+        );
+        assert_eq!(render(&lines, Style::Text), "input    ms\ndude   0.25\n");
     }
 }

@@ -36,7 +36,8 @@ enum Command {
     /// Where f32 and f64 triangulations stay valid: a report over scales, offsets and
     /// feature sizes, polytri against earcut and i_triangle.
     Precision(precision::Args),
-    /// Time polytri against earcut, earcutr, i_triangle, lyon and spade on the same inputs.
+    /// Time polytri against earcut, earcutr, i_triangle, lyon and spade on the same inputs,
+    /// or on generated series of growing size (--scaling).
     Bench(bench::Args),
     /// Judge a triangulation of a file's polygons with the oracle's independent checks.
     Check(check::Args),

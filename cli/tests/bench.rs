@@ -1,25 +1,44 @@
-//! `polytri bench` end to end: the table's shape on one small fixture, not its timings.
+//! `polytri bench` end to end: the tables' shape on small inputs, never their timings.
 
-use std::path::PathBuf;
+use std::fs;
+use std::path::{Path, PathBuf};
 use std::process::Command;
+
+use serde_json::Value;
 
 fn fixture(name: &str) -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(format!("../corpus/earcut/fixtures/{name}.json"))
 }
 
-fn bench(extra: &[&str]) -> String {
-    let building = fixture("building");
+/// A fresh directory for one test, so tests running in parallel never share files.
+fn scratch(test: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("polytri-cli-bench-{}-{test}", std::process::id()));
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).expect("create scratch directory");
+    dir
+}
+
+/// Runs `polytri bench --quick ARGS`; its stdout and stderr, after asserting success.
+fn run(args: &[&str]) -> (String, String) {
     let out = Command::new(env!("CARGO_BIN_EXE_polytri"))
         .arg("bench")
         .arg("--quick")
-        .args(extra)
-        .arg(&building)
+        .args(args)
         .output()
         .expect("run polytri bench");
-    let stderr = String::from_utf8_lossy(&out.stderr);
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
     assert!(out.status.success(), "polytri bench failed: {stderr}");
+    (String::from_utf8(out.stdout).expect("UTF-8 output"), stderr)
+}
+
+/// `polytri bench --quick ARGS building.json`: its stdout.
+fn bench(extra: &[&str]) -> String {
+    let building = fixture("building");
+    let mut args = extra.to_vec();
+    args.push(building.to_str().expect("UTF-8 path"));
+    let (stdout, stderr) = run(&args);
     assert!(stderr.contains("building"), "progress on stderr: {stderr}");
-    String::from_utf8(out.stdout).expect("UTF-8 output")
+    stdout
 }
 
 #[test]
@@ -34,16 +53,19 @@ fn table_has_every_column_and_a_geometric_mean() {
     let header = lines[0];
     for column in [
         "input",
+        "polygons",
         "vertices",
         "triangles",
         "polytri-fast ms",
         "polytri-lenient ms",
         "polytri-quality ms",
+        "polytri-check ms",
         "earcut ms",
         "earcutr ms",
         "i-triangle ms",
         "lyon ms",
         "spade ms",
+        "fastest peer",
     ] {
         assert!(
             header.contains(column),
@@ -51,17 +73,21 @@ fn table_has_every_column_and_a_geometric_mean() {
         );
     }
     let row: Vec<&str> = lines[1].split_whitespace().collect();
-    assert_eq!(row[0], "building");
-    assert_eq!(row[1], "15");
-    // every implementation: a time and a ratio, none failed
-    assert_eq!(row.len(), 3 + 2 * 8, "{row:?}");
-    assert_eq!(lines[2].matches('×').count(), 8, "{}", lines[2]);
+    assert_eq!(row[..3], ["building", "1", "15"]);
+    assert!(row[3].parse::<usize>().is_ok_and(|t| t > 10), "{row:?}");
+    // every implementation: a time and a ratio, none failed; then the fastest peer's name
+    assert_eq!(row.len(), 4 + 2 * 9 + 1, "{row:?}");
+    assert!(
+        ["earcut", "earcutr", "i-triangle", "lyon", "spade"].contains(&row[row.len() - 1]),
+        "{row:?}"
+    );
+    assert_eq!(lines[2].matches('×').count(), 9, "{}", lines[2]);
 }
 
 #[test]
 fn json_lists_chosen_peers() {
     let text = bench(&["--json", "--peers", "earcut,i_triangle"]);
-    let json: serde_json::Value = serde_json::from_str(&text).expect("JSON on stdout");
+    let json: Value = serde_json::from_str(&text).expect("JSON on stdout");
     let names: Vec<&str> = json["implementations"]
         .as_array()
         .expect("implementations")
@@ -74,25 +100,173 @@ fn json_lists_chosen_peers() {
             "polytri-fast",
             "polytri-lenient",
             "polytri-quality",
+            "polytri-check",
             "earcut",
             "i-triangle"
         ]
     );
     let timings = &json["rows"][0]["timings"];
-    assert_eq!(timings.as_array().map(Vec::len), Some(5));
+    assert_eq!(timings.as_array().map(Vec::len), Some(6));
     // whichever peer is faster has ratio exactly 1
-    let ones = (3..5)
+    let ones = (4..6)
         .filter(|&k| timings[k]["ratio"].as_f64() == Some(1.0))
         .count();
     assert_eq!(ones, 1, "{timings}");
 }
 
 #[test]
+fn check_column_times_the_check_alone_and_is_no_peer() {
+    let text = bench(&["--json", "--polytri", "check,fast", "--peers", "earcut"]);
+    let json: Value = serde_json::from_str(&text).expect("JSON on stdout");
+    let timings = &json["rows"][0]["timings"];
+    assert_eq!(timings[0]["implementation"], "polytri-check");
+    assert_eq!(timings[1]["implementation"], "polytri-fast");
+    // the check ran, but made no triangles; the row's count is polytri-fast's
+    assert!(timings[0]["median_ms"].is_number(), "{timings}");
+    assert!(timings[0]["triangles"].is_null(), "{timings}");
+    assert!(
+        timings[1]["triangles"].as_u64().is_some_and(|t| t > 10),
+        "{timings}"
+    );
+    assert_eq!(json["rows"][0]["triangles"], timings[1]["triangles"]);
+    // however fast the check is, the ratios are to the only peer
+    assert_eq!(timings[2]["ratio"].as_f64(), Some(1.0), "{timings}");
+}
+
+#[test]
+fn check_column_refuses_what_strict_mode_refuses() {
+    let dir = scratch("bow-tie");
+    let bow_tie = dir.join("bow_tie.json");
+    fs::write(&bow_tie, "[[[0,0],[4,4],[4,0],[0,4]]]").expect("write input");
+    let (table, stderr) = run(&[
+        "--polytri",
+        "fast,lenient,check",
+        "--peers",
+        "earcut",
+        bow_tie.to_str().expect("UTF-8 path"),
+    ]);
+    let row: Vec<&str> = table
+        .lines()
+        .nth(1)
+        .expect("a row")
+        .split_whitespace()
+        .collect();
+    assert_eq!(row[0], "bow_tie");
+    // fast and check refuse, lenient repairs (a time and a ratio), earcut runs
+    assert_eq!(row[4], "refused", "{row:?}");
+    assert!(row[5].parse::<f64>().is_ok(), "{row:?}");
+    assert_eq!(row[7], "refused", "{row:?}");
+    assert!(row[8].parse::<f64>().is_ok(), "{row:?}");
+    assert!(stderr.contains("polytri-check failed"), "{stderr}");
+}
+
+#[test]
+fn per_second_markdown_is_the_papers_table() {
+    let (table, _) = run(&[
+        "--paper",
+        "--polytri",
+        "fast,quality",
+        "--peers",
+        "earcut",
+        "--per-second",
+        "--markdown",
+    ]);
+    let lines: Vec<&str> = table.lines().collect();
+    assert_eq!(
+        lines[0],
+        "| input               | polygons | vertices | triangles | polytri-fast M tri/s \
+         | polytri-quality M tri/s | earcut M tri/s | fastest peer |"
+    );
+    assert!(
+        lines[1].starts_with("| ------------------- | -------: |"),
+        "{}",
+        lines[1]
+    );
+    // the seven datasets, then the geometric mean
+    assert_eq!(lines.len(), 2 + 7 + 1, "{table}");
+    let letter_a: Vec<&str> = lines[2].split('|').map(str::trim).collect();
+    assert_eq!(letter_a[1..5], ["letter_a", "1", "11", "11"]);
+    assert!(letter_a[5].ends_with("×)"), "{letter_a:?}");
+    assert_eq!(letter_a[8], "earcut");
+    assert!(lines[9].starts_with("| **geometric mean**"), "{}", lines[9]);
+}
+
+#[test]
+fn quick_scaling_prints_medians_and_exponents_and_plots_each_series() {
+    let dir = scratch("scaling");
+    let (text, stderr) = run(&[
+        "--scaling",
+        "--sizes",
+        "200,400,800",
+        "--series",
+        "circles,comb",
+        "--out",
+        dir.to_str().expect("UTF-8 path"),
+    ]);
+    for series in ["circles", "comb"] {
+        let path = dir.join(format!("scaling-{series}.svg"));
+        let svg = fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path:?}: {e}"));
+        assert!(svg.starts_with("<svg"), "{}", &svg[..80.min(svg.len())]);
+        assert!(svg.trim_end().ends_with("</svg>"));
+        for text in ["vertices", "polytri-fast (n^", "spade (n^"] {
+            assert!(svg.contains(text), "{series}: no {text:?} in the plot");
+        }
+        assert!(
+            stderr.contains(&format!("{series}-800")),
+            "progress: {stderr}"
+        );
+    }
+    let (medians, exponents) = text
+        .split_once("growth exponent")
+        .expect("an exponent table after the medians");
+    let medians: Vec<&str> = medians.lines().filter(|l| !l.is_empty()).collect();
+    assert!(medians[0].starts_with("series"), "{}", medians[0]);
+    assert!(medians[0].contains("polytri-check ms"), "{}", medians[0]);
+    assert_eq!(
+        medians.len(),
+        1 + 2 * 3,
+        "a line per series and size:\n{text}"
+    );
+    for line in exponents.lines().filter(|l| l.starts_with("c")) {
+        let cells: Vec<&str> = line.split_whitespace().collect();
+        // every implementation ran at three sizes: an exponent each
+        assert_eq!(cells.len(), 1 + 9, "{line}");
+        for cell in &cells[1..] {
+            let k: f64 = cell
+                .parse()
+                .unwrap_or_else(|_| panic!("{cell:?} in {line}"));
+            assert!(k.is_finite(), "{line}");
+        }
+    }
+    assert_eq!(exponents.lines().filter(|l| l.starts_with("c")).count(), 2);
+}
+
+#[test]
 fn unknown_peer_is_a_usage_error() {
+    for args in [
+        ["bench", "--peers", "triangle"],
+        ["bench", "--polytri", "slow"],
+        ["bench", "--series", "square"],
+    ] {
+        let out = Command::new(env!("CARGO_BIN_EXE_polytri"))
+            .args(args)
+            .output()
+            .expect("run polytri bench");
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        assert!(
+            String::from_utf8_lossy(&out.stderr).contains("unknown"),
+            "{args:?}"
+        );
+    }
+}
+
+#[test]
+fn files_and_scaling_exclude_each_other() {
+    let building = fixture("building");
     let out = Command::new(env!("CARGO_BIN_EXE_polytri"))
-        .args(["bench", "--peers", "triangle"])
+        .args(["bench", "--scaling"])
+        .arg(Path::new(&building))
         .output()
         .expect("run polytri bench");
     assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("unknown peer"));
 }

@@ -2,11 +2,12 @@
 //!
 //! Inputs: earcut's benchmark fixtures, the paper-shaped datasets of `corpus/datasets/`
 //! (each shape a polygon: polytri and earcut take them one by one, the others all at
-//! once), and generated series of 10³ to 10⁶ vertices (a random star, a rectangle with
-//! many circular holes, a comb). Each bench runs one input, one row per implementation;
+//! once), and generated series of 10³ to 10⁶ vertices ([`polytri_oracle::series`]: a
+//! random polygon, a star, a rectangle with many circular holes, a comb — the same inputs
+//! `polytri bench --scaling` times). Each bench runs one input, one row per implementation;
 //! inputs are converted into every library's format before timing
 //! ([`Prepared`]), and every implementation keeps its buffers between runs ([`Runner`]).
-//! polytri-fast against polytri-lenient is the cost of the strict input check.
+//! polytri-check is strict mode's input check alone, without triangulating.
 //!
 //! `cargo bench -p polytri-oracle --bench peers -- water` runs the benches whose name
 //! contains `water`. Some peers are quadratic on some generated families: from 10⁵
@@ -19,6 +20,7 @@ use std::sync::{Mutex, OnceLock};
 
 use divan::Bencher;
 use polytri_oracle::peers::{Implementation, Prepared, Runner};
+use polytri_oracle::series::Series;
 use polytri_oracle::{Input, Nesting, Role};
 
 fn main() {
@@ -53,80 +55,6 @@ fn dataset(name: &str) -> Input {
         .collect();
     let rings: Vec<Vec<[f64; 2]>> = shapes.into_iter().flatten().collect();
     Input::from_rings(&rings, Nesting::Roles(roles))
-}
-
-/// A small seeded generator (SplitMix64): benchmarks need the same inputs every run, not
-/// good randomness.
-struct SplitMix(u64);
-
-impl SplitMix {
-    /// A uniform float in `[0, 1)`.
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^= z >> 31;
-        (z >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
-
-/// A star-shaped polygon of `n` vertices: evenly spread angles, random radii in [0.2, 1].
-fn star(n: usize) -> Input {
-    let mut rng = SplitMix(n as u64);
-    let ring: Vec<[f64; 2]> = (0..n)
-        .map(|k| {
-            let angle = std::f64::consts::TAU * k as f64 / n as f64;
-            let radius = 0.2 + 0.8 * rng.next();
-            [radius * angle.cos(), radius * angle.sin()]
-        })
-        .collect();
-    Input::from_rings(&[ring], Nesting::FirstIsOuter)
-}
-
-/// A rectangle with 32-gon holes on a grid, about `n` vertices in all.
-fn circles(n: usize) -> Input {
-    const SIDES: usize = 32;
-    let holes = (n / SIDES).max(1);
-    let columns = (holes as f64).sqrt().ceil() as usize;
-    let rows = holes.div_ceil(columns);
-    let mut rng = SplitMix(n as u64 ^ 0xC1C1);
-    let mut rings = vec![vec![
-        [0.0, 0.0],
-        [columns as f64, 0.0],
-        [columns as f64, rows as f64],
-        [0.0, rows as f64],
-    ]];
-    for h in 0..holes {
-        let center = [(h % columns) as f64 + 0.5, (h / columns) as f64 + 0.5];
-        let radius = 0.3 + 0.15 * rng.next();
-        rings.push(
-            (0..SIDES)
-                .map(|k| {
-                    let angle = std::f64::consts::TAU * k as f64 / SIDES as f64;
-                    [
-                        center[0] + radius * angle.cos(),
-                        center[1] + radius * angle.sin(),
-                    ]
-                })
-                .collect(),
-        );
-    }
-    Input::from_rings(&rings, Nesting::FirstIsOuter)
-}
-
-/// A comb: about `n / 4` thin teeth on a spine, every tooth tip a reflex-free spike and
-/// every gap a reflex pair — the worst shape for naive ear search.
-fn comb(n: usize) -> Input {
-    let teeth = (n.saturating_sub(2) / 4).max(1);
-    let mut ring = Vec::with_capacity(4 * teeth + 2);
-    for t in 0..teeth {
-        let x = 2.0 * t as f64;
-        ring.extend_from_slice(&[[x, 1.0], [x, 10.0], [x + 1.0, 10.0], [x + 1.0, 1.0]]);
-    }
-    let end = 2.0 * teeth as f64 - 1.0;
-    ring.extend_from_slice(&[[end, 0.0], [0.0, 0.0]]);
-    Input::from_rings(&[ring], Nesting::FirstIsOuter)
 }
 
 /// Prepared inputs, made once per process however many benches use them.
@@ -205,17 +133,12 @@ datasets! {
 /// Longest predicted single run a series bench still times, in seconds.
 const SERIES_LIMIT: f64 = 5.0;
 
-/// The seconds of one run of `imp` (the fastest of three) on `family` at size `n` (`None` when it refuses the
-/// input or was left out as too slow), measured once per process.
-fn single_run(
-    family: &str,
-    make: fn(usize) -> Input,
-    n: usize,
-    imp: Implementation,
-) -> Option<f64> {
-    type Key = (String, usize, Implementation);
+/// The seconds of one run of `imp` (the fastest of three) on `series` at size `n` (`None`
+/// when it refuses the input or was left out as too slow), measured once per process.
+fn single_run(series: Series, n: usize, imp: Implementation) -> Option<f64> {
+    type Key = (Series, usize, Implementation);
     static TIMES: OnceLock<Mutex<HashMap<Key, Option<f64>>>> = OnceLock::new();
-    let key = (family.to_owned(), n, imp);
+    let key = (series, n, imp);
     if let Some(&known) = TIMES
         .get_or_init(Default::default)
         .lock()
@@ -224,10 +147,10 @@ fn single_run(
     {
         return known;
     }
-    let seconds = if too_slow(family, make, n, imp) {
+    let seconds = if too_slow(series, n, imp) {
         None
     } else {
-        let input = prepared(&format!("{family}-{n}"), || make(n));
+        let input = prepared(&format!("{series}-{n}"), || series.input(n));
         let mut runner = Runner::new();
         // the fastest of three, so a cold first run does not flatten the growth
         (0..3)
@@ -251,13 +174,13 @@ fn single_run(
 /// Whether one run at size `n` is predicted to take longer than [`SERIES_LIMIT`]: the
 /// growth from n/100 to n/10 extrapolated one step (at least linear). Some peers are
 /// quadratic on some families, and a 10⁶-vertex run would then take hours.
-fn too_slow(family: &str, make: fn(usize) -> Input, n: usize, imp: Implementation) -> bool {
+fn too_slow(series: Series, n: usize, imp: Implementation) -> bool {
     if n < 100_000 {
         return false;
     }
     let (Some(small), Some(smaller)) = (
-        single_run(family, make, n / 10, imp),
-        single_run(family, make, n / 100, imp),
+        single_run(series, n / 10, imp),
+        single_run(series, n / 100, imp),
     ) else {
         return true;
     };
@@ -266,26 +189,27 @@ fn too_slow(family: &str, make: fn(usize) -> Input, n: usize, imp: Implementatio
 }
 
 macro_rules! series {
-    ($family:ident: $($fn_name:ident => $n:literal),* $(,)?) => {
-        /// A generated family at growing sizes.
-        mod $family {
+    ($module:ident = $series:expr; $($fn_name:ident => $n:literal),* $(,)?) => {
+        /// A generated series at growing sizes.
+        mod $module {
             use super::*;
             $(
                 #[divan::bench(args = implementations(), sample_count = 10, max_time = 3)]
                 fn $fn_name(bencher: Bencher, imp: Implementation) {
-                    let family = stringify!($family);
-                    if too_slow(family, super::$family, $n, imp) {
-                        eprintln!("{family}-{}: {imp} skipped: predicted over {SERIES_LIMIT} s a run", $n);
+                    let series: Series = $series;
+                    if too_slow(series, $n, imp) {
+                        eprintln!("{series}-{}: {imp} skipped: predicted over {SERIES_LIMIT} s a run", $n);
                         return;
                     }
-                    let name = format!("{family}-{}", $n);
-                    bench(bencher, imp, &name, || super::$family($n));
+                    let name = format!("{series}-{}", $n);
+                    bench(bencher, imp, &name, || series.input($n));
                 }
             )*
         }
     };
 }
 
-series!(star: n_1e3 => 1_000, n_1e4 => 10_000, n_1e5 => 100_000, n_1e6 => 1_000_000);
-series!(circles: n_1e3 => 1_000, n_1e4 => 10_000, n_1e5 => 100_000, n_1e6 => 1_000_000);
-series!(comb: n_1e3 => 1_000, n_1e4 => 10_000, n_1e5 => 100_000, n_1e6 => 1_000_000);
+series!(random = Series::Random; n_1e3 => 1_000, n_1e4 => 10_000, n_1e5 => 100_000, n_1e6 => 1_000_000);
+series!(star = Series::Star; n_1e3 => 1_000, n_1e4 => 10_000, n_1e5 => 100_000, n_1e6 => 1_000_000);
+series!(circles = Series::Circles; n_1e3 => 1_000, n_1e4 => 10_000, n_1e5 => 100_000, n_1e6 => 1_000_000);
+series!(comb = Series::Comb; n_1e3 => 1_000, n_1e4 => 10_000, n_1e5 => 100_000, n_1e6 => 1_000_000);

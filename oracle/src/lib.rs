@@ -18,6 +18,8 @@
 //! - `fuzz`: the bodies of the cargo-fuzz targets, so stable tests can replay their corpus.
 //! - `replay`: the regression corpus through polytri in every strategy, precision and
 //!   rotation, judged here (`oracle/tests/corpus.rs`'s snapshots, `polytri replay`).
+//! - [`series`]: generated inputs from 10³ to 10⁶ vertices for the scaling benchmarks
+//!   (`cargo bench`, `polytri bench --scaling`).
 //!
 //! Nothing here shares predicates with `polytri`: the oracle has its own exact arithmetic
 //! (`exact`, after Shewchuk).
@@ -36,9 +38,28 @@ mod metrics;
 pub mod peers;
 pub mod precision;
 pub mod replay;
+pub mod series;
 pub mod shrink;
 pub mod strategy;
 
 pub use check::{check, check_with, CdtComparison, Check, CheckOptions, Verdict};
+
+/// The item of `all` whose `name` is `s` (trimmed, any case) — the `FromStr` of the
+/// harness's named enums; the error lists the known names after `"unknown {what}"`.
+pub(crate) fn by_name<T: Copy>(
+    s: &str,
+    all: &[T],
+    name: impl Fn(T) -> &'static str,
+    what: &str,
+) -> Result<T, String> {
+    let wanted = s.trim();
+    all.iter()
+        .copied()
+        .find(|&item| name(item).eq_ignore_ascii_case(wanted))
+        .ok_or_else(|| {
+            let names: Vec<_> = all.iter().map(|&item| name(item)).collect();
+            format!("unknown {what} '{s}' (known: {})", names.join(", "))
+        })
+}
 pub use gen::{generate, Case, Family, Params};
 pub use input::{Input, Nesting, Role};

@@ -198,8 +198,28 @@ fn runner_counts_match_one_shot_runs() {
     let prepared = Prepared::new(&Input::from_rings(&rings, Nesting::FirstIsOuter));
     let mut runner = Runner::new();
     for imp in Implementation::all() {
+        // the check alone makes no triangles
+        let expected = if imp == Implementation::PolytriCheck {
+            0
+        } else {
+            count
+        };
         for _ in 0..2 {
-            assert_eq!(runner.run(imp, &prepared), Ok(count), "{imp}");
+            assert_eq!(runner.run(imp, &prepared), Ok(expected), "{imp}");
         }
     }
+}
+
+#[test]
+fn runner_check_refuses_what_strict_polytri_refuses() {
+    let bow_tie = vec![[0.0, 0.0], [4.0, 4.0], [4.0, 0.0], [0.0, 4.0]];
+    let prepared = Prepared::new(&Input::from_rings(&[bow_tie], Nesting::FirstIsOuter));
+    let mut runner = Runner::new();
+    let check = runner.run(Implementation::PolytriCheck, &prepared);
+    let fast = runner.run(Implementation::PolytriFast, &prepared);
+    assert!(check.is_err(), "{check:?}");
+    assert_eq!(check, fast);
+    assert!(runner
+        .run(Implementation::PolytriLenient, &prepared)
+        .is_ok());
 }

@@ -39,7 +39,7 @@ use serde::{Deserialize, Serialize};
 use crate::input::{Input, Nesting};
 pub use case::Case;
 use geom::Ring;
-use rng::Rng;
+pub(crate) use rng::Rng;
 pub use validate::{validate, Layout};
 
 /// Bits of the generators' integer grid: coordinates before scaling lie in `0..=GRID`.
@@ -279,20 +279,7 @@ struct Shape {
 pub fn generate(family: Family, seed: u64, params: &Params) -> Case {
     let mut rng = Rng::new(seed ^ family_salt(family));
     let n = params.target();
-    let shape = match family {
-        Family::Star => random_polygons::star(&mut rng, n),
-        Family::SpacePartition => random_polygons::space_partition(&mut rng, n),
-        Family::TwoOpt => random_polygons::two_opt(&mut rng, n),
-        Family::Orthogonal => outlines::orthogonal(&mut rng, n),
-        Family::Circles => holes::circles(&mut rng, n),
-        Family::Comb => outlines::comb(&mut rng, n),
-        Family::Spiral => outlines::spiral(&mut rng, n),
-        Family::ManyHoles => holes::many_holes(&mut rng, n),
-        Family::TouchingHoles => holes::touching_holes(&mut rng, n),
-        Family::NestedIslands => holes::nested_islands(&mut rng, n),
-        Family::Slivers => outlines::slivers(&mut rng, n),
-        Family::FontLike => holes::font_like(&mut rng, n),
-    };
+    let shape = shape(family, &mut rng, n);
     let input = place(shape.rings, &mut rng, params);
     debug_assert!(
         input.vertices.len() > 2000 || !params.is_exact() || {
@@ -312,6 +299,37 @@ pub fn generate(family: Family, seed: u64, params: &Params) -> Case {
         source: "polytri-oracle generator".to_string(),
         input,
         expect: None,
+    }
+}
+
+/// The rings of a seeded case of `family` with about `vertices` vertices, on the integer
+/// grid, in the order and winding the generator made them: like [`generate`] but without
+/// its 100,000-vertex clamp, for the benchmark series ([`crate::series`]) that go to 10⁶.
+/// Only for families whose generator is near-linear (not [`Family::TwoOpt`]).
+pub(crate) fn grid_rings(family: Family, seed: u64, vertices: usize) -> Vec<Vec<[f64; 2]>> {
+    let mut rng = Rng::new(seed ^ family_salt(family));
+    shape(family, &mut rng, vertices.max(3))
+        .rings
+        .into_iter()
+        .map(|ring| ring.iter().map(|&[x, y]| [x as f64, y as f64]).collect())
+        .collect()
+}
+
+/// What `family`'s generator makes of `rng` at about `n` vertices.
+fn shape(family: Family, rng: &mut Rng, n: usize) -> Shape {
+    match family {
+        Family::Star => random_polygons::star(rng, n),
+        Family::SpacePartition => random_polygons::space_partition(rng, n),
+        Family::TwoOpt => random_polygons::two_opt(rng, n),
+        Family::Orthogonal => outlines::orthogonal(rng, n),
+        Family::Circles => holes::circles(rng, n),
+        Family::Comb => outlines::comb(rng, n),
+        Family::Spiral => outlines::spiral(rng, n),
+        Family::ManyHoles => holes::many_holes(rng, n),
+        Family::TouchingHoles => holes::touching_holes(rng, n),
+        Family::NestedIslands => holes::nested_islands(rng, n),
+        Family::Slivers => outlines::slivers(rng, n),
+        Family::FontLike => holes::font_like(rng, n),
     }
 }
 

@@ -95,14 +95,7 @@ impl FromStr for Peer {
 
     /// Reads a kebab-case name (`i_triangle` with an underscore is accepted too).
     fn from_str(s: &str) -> Result<Self, Self::Err> {
-        let wanted = s.trim().replace('_', "-");
-        Peer::ALL
-            .into_iter()
-            .find(|peer| peer.name().eq_ignore_ascii_case(&wanted))
-            .ok_or_else(|| {
-                let names: Vec<_> = Peer::ALL.iter().map(|p| p.name()).collect();
-                format!("unknown peer '{s}' (known: {})", names.join(", "))
-            })
+        crate::by_name(&s.replace('_', "-"), &Peer::ALL, Peer::name, "peer")
     }
 }
 

@@ -18,21 +18,28 @@ use crate::input::Input;
 pub enum Implementation {
     /// polytri, fast strategy, strict (the input is checked for crossings first).
     PolytriFast,
-    /// polytri, fast strategy, lenient (no input check): the difference to
-    /// [`PolytriFast`](Self::PolytriFast) is the cost of the strict check.
+    /// polytri, fast strategy, lenient: crossing and touching input is repaired instead of
+    /// refused. It still sweeps the edges to find crossings and touching points, and on
+    /// input that has some it runs more passes (see the README's "Speed").
     PolytriLenient,
     /// polytri, quality strategy (smallest angle first), strict.
     PolytriQuality,
+    /// polytri's strict input check alone ([`polytri::Triangulator::check`]: loading, the
+    /// edge sweep that refuses crossings, nesting), no triangulation: what the check costs
+    /// of [`PolytriFast`](Self::PolytriFast)'s time. Makes no triangles ([`Runner::run`]
+    /// returns 0).
+    PolytriCheck,
     /// Another triangulator.
     Peer(Peer),
 }
 
 impl Implementation {
     /// The polytri configurations, in the order tables show them.
-    pub const POLYTRI: [Implementation; 3] = [
+    pub const POLYTRI: [Implementation; 4] = [
         Implementation::PolytriFast,
         Implementation::PolytriLenient,
         Implementation::PolytriQuality,
+        Implementation::PolytriCheck,
     ];
 
     /// Every polytri configuration, then every peer.
@@ -48,12 +55,18 @@ impl Implementation {
         !matches!(self, Implementation::Peer(_))
     }
 
+    /// Whether this makes triangles: all but [`PolytriCheck`](Self::PolytriCheck).
+    pub const fn triangulates(self) -> bool {
+        !matches!(self, Implementation::PolytriCheck)
+    }
+
     /// The kebab-case name, as [`Display`](fmt::Display) writes and [`FromStr`] reads it.
     pub const fn name(self) -> &'static str {
         match self {
             Implementation::PolytriFast => "polytri-fast",
             Implementation::PolytriLenient => "polytri-lenient",
             Implementation::PolytriQuality => "polytri-quality",
+            Implementation::PolytriCheck => "polytri-check",
             Implementation::Peer(peer) => peer.name(),
         }
     }
@@ -119,6 +132,11 @@ impl Prepared {
     pub fn input(&self) -> &Input {
         &self.input
     }
+
+    /// How many polygons (outer rings with their holes) the input has, as earcut gets them.
+    pub fn polygon_count(&self) -> usize {
+        self.polygons.len()
+    }
 }
 
 /// Every implementation's reusable state: a benchmark calls [`Runner::run`] in a loop and
@@ -164,7 +182,8 @@ impl Runner {
         }
     }
 
-    /// Triangulates `prepared` with `imp` and returns the number of triangles.
+    /// Triangulates `prepared` with `imp` and returns the number of triangles (0 for
+    /// [`Implementation::PolytriCheck`], which only checks).
     ///
     /// # Errors
     ///
@@ -193,6 +212,7 @@ impl Runner {
                 prepared,
                 polytri::Options::new().with_strategy(polytri::Strategy::Quality),
             ),
+            Implementation::PolytriCheck => self.polytri_check(prepared),
             Implementation::Peer(Peer::Earcut) => Ok(self.earcut(prepared)),
             Implementation::Peer(Peer::Earcutr) => earcutr(prepared),
             Implementation::Peer(Peer::ITriangle) => Ok(self.i_triangle(prepared)),
@@ -204,35 +224,22 @@ impl Runner {
     /// polytri on the whole input for `Auto` and `FirstIsOuter`, else per polygon (each
     /// first-is-outer, exactly as earcut gets it).
     fn polytri(&mut self, prepared: &Prepared, options: polytri::Options) -> Result<usize, String> {
-        let input = &prepared.input;
-        if let Some(nesting) = input.nesting.to_polytri() {
+        let out = &mut self.polytri_out;
+        polytri_calls(prepared, |vertices, ring_starts, nesting| {
             let options = options.with_nesting(nesting);
-            return self
-                .polytri
-                .triangulate(
-                    &input.vertices,
-                    &input.ring_starts,
-                    &options,
-                    &mut self.polytri_out,
-                )
+            self.polytri
+                .triangulate(vertices, ring_starts, &options, out)
                 .map(|report| report.triangles)
-                .map_err(|e| e.to_string());
-        }
-        let options = options.with_nesting(polytri::Nesting::FirstIsOuter);
-        let mut triangles = 0;
-        for polygon in &prepared.polygons {
-            triangles += self
-                .polytri
-                .triangulate(
-                    &polygon.vertices,
-                    &polygon.ring_starts,
-                    &options,
-                    &mut self.polytri_out,
-                )
-                .map_err(|e| e.to_string())?
-                .triangles;
-        }
-        Ok(triangles)
+        })
+    }
+
+    /// polytri's strict input check alone, on the same calls as [`Runner::polytri`].
+    fn polytri_check(&mut self, prepared: &Prepared) -> Result<usize, String> {
+        polytri_calls(prepared, |vertices, ring_starts, nesting| {
+            self.polytri
+                .check(vertices, ring_starts, nesting)
+                .map(|()| 0)
+        })
     }
 
     fn earcut(&mut self, prepared: &Prepared) -> usize {
@@ -261,6 +268,27 @@ impl Runner {
             .map_err(|e| format!("lyon: {e:?}"))?;
         Ok(self.lyon_out.indices.len() / 3)
     }
+}
+
+/// Calls `call` (vertices, ring starts, nesting; it returns triangles) once on the whole
+/// input for `Auto` and `FirstIsOuter`, else once per polygon, first-is-outer; the sum.
+fn polytri_calls(
+    prepared: &Prepared,
+    mut call: impl FnMut(&[[f64; 2]], &[usize], polytri::Nesting) -> Result<usize, polytri::Error>,
+) -> Result<usize, String> {
+    let input = &prepared.input;
+    if let Some(nesting) = input.nesting.to_polytri() {
+        return call(&input.vertices, &input.ring_starts, nesting).map_err(|e| e.to_string());
+    }
+    prepared.polygons.iter().try_fold(0, |triangles, polygon| {
+        call(
+            &polygon.vertices,
+            &polygon.ring_starts,
+            polytri::Nesting::FirstIsOuter,
+        )
+        .map(|t| triangles + t)
+        .map_err(|e| e.to_string())
+    })
 }
 
 fn earcutr(prepared: &Prepared) -> Result<usize, String> {

@@ -58,8 +58,8 @@ water-huge2, water3) and the paper datasets of corpus/datasets/ (only the datase
 
 Columns: per implementation the median time of one run in milliseconds and, in \
 parentheses, its ratio to the fastest peer on that input (polytri columns too: below 1 \
-means polytri is faster than every peer). polytri-fast is strict: it refuses crossing or \
-touching edges. polytri-lenient repairs them instead of refusing; it still sweeps the edges \
+means polytri is faster than every peer). polytri-fast is strict: it refuses crossing edges \
+(rings touching at vertices are fine). polytri-lenient repairs them instead of refusing; it still sweeps the edges \
 to find them, and runs extra passes on input that has some. polytri-check is strict mode's \
 input check alone (loading, the edge sweep, nesting), no triangulation: compare it with \
 polytri-fast for the check's share. The last row is the geometric mean of the ratios. Files \

@@ -61,9 +61,10 @@ pub(crate) struct ClipScratch {
 }
 
 /// The quality strategy's queue of candidate ears: (angle key, node, stamp, epoch),
-/// smallest first. A 4-ary heap: popping from a queue of a million ears touches half as many levels
-/// as a binary heap, and a node's four children share a cache line. Entries are totally
-/// ordered (equal ones are identical), so the pop order is that of any priority queue.
+/// smallest first. A 4-ary heap: popping from a queue of a million ears touches half as
+/// many levels as a binary heap, and a node's four children share a cache line. Entries
+/// are totally ordered (equal ones are identical), so the pop order is that of any
+/// priority queue.
 #[derive(Debug, Default)]
 struct EarQueue {
     items: Vec<Ear>,

@@ -576,28 +576,20 @@ mod tests {
     fn apart(rings: &[&[(f64, f64)]]) -> bool {
         let (pool, starts) = build(rings);
         let mut nodes = Vec::new();
-        let ok = edges_apart(
-            &pool,
-            &starts,
-            &mut PruneScratch::default(),
-            &mut nodes,
-            false,
-        );
-        assert_eq!(nodes.len(), rings.iter().map(|r| r.len()).sum::<usize>());
+        let mut run = |turns_proper| {
+            let scratch = &mut PruneScratch::default();
+            edges_apart(&pool, &starts, scratch, &mut nodes, turns_proper)
+        };
+        let ok = run(false);
         let proper = (0..pool.len() as u32).map(NodeId).all(|n| {
             orient2d(pool.p(pool.prev(n)), pool.p(n), pool.p(pool.next(n)))
                 != Orientation::Collinear
         });
         if proper {
-            let fast = edges_apart(
-                &pool,
-                &starts,
-                &mut PruneScratch::default(),
-                &mut nodes,
-                true,
-            );
+            let fast = run(true);
             assert_eq!(fast, ok, "turns_proper changed the answer");
         }
+        assert_eq!(nodes.len(), rings.iter().map(|r| r.len()).sum::<usize>());
         ok
     }
 
@@ -727,8 +719,10 @@ mod tests {
                     "{len} {shape}"
                 );
                 let mut got: Vec<(f64, u32)> = boxes.iter().map(|b| (b.x0, b.from.0)).collect();
-                expected.sort_by(|s, t| s.partial_cmp(t).unwrap());
-                got.sort_by(|s, t| s.partial_cmp(t).unwrap());
+                let order =
+                    |s: &(f64, u32), t: &(f64, u32)| s.0.total_cmp(&t.0).then(s.1.cmp(&t.1));
+                expected.sort_by(order);
+                got.sort_by(order);
                 assert_eq!(got, expected, "{len} {shape}: not a permutation");
             }
         }

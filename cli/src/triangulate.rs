@@ -301,7 +301,7 @@ fn describe_error(refusal: &Refusal, layout: &Layout, precision: Precision) -> S
                 .locate(v + refusal.vertex_offset)
                 .map_or(v, |at| at.vertex);
             format!(
-                "{} overlaps another ring: all its corners (e.g. vertex {corner}) are corners of another ring {hint}",
+                "{} overlaps another ring: it lies on that ring's boundary (e.g. at vertex {corner}) and would cover its inside twice {hint}",
                 ring(r)
             )
         }

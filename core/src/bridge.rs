@@ -25,7 +25,7 @@
 
 use core::cmp::Ordering;
 
-use crate::nest::{corner_contains, index_all_edges, same_ray, skip_ring};
+use crate::nest::{corner_contains, index_all_edges, on_ray, skip_ring};
 use crate::pool::NodeId;
 use crate::predicates::{left_of, orient2d, Orientation, Point};
 use crate::triangulator::Context;
@@ -235,9 +235,7 @@ fn find_touching(cx: &Context, m: NodeId) -> Option<NodeId> {
             // polygon, or an island inside the hole touching it there. Only the first is
             // the hole's polygon, as nesting depth tells.
             None => {
-                same_ray(pm, mn, xp)
-                    && same_ray(pm, mp, xn)
-                    && input_depth(cx, x) < input_depth(cx, m)
+                on_ray(pm, mn, xp) && on_ray(pm, mp, xn) && input_depth(cx, x) < input_depth(cx, m)
             }
         }
     })

@@ -55,8 +55,10 @@ pub enum Error {
         /// Start vertex of the second edge.
         edge_b: usize,
     },
-    /// Every corner of a ring coincides with a corner of another ring: the two rings
-    /// overlap, so which is inside which is undefined (strict mode only).
+    /// A ring lies on another ring's boundary, every corner of it inside a corner of the
+    /// other, without the two bounding a region together (as an outer ring and its hole
+    /// cancelling each other do): the same ring twice, say, which would cover its inside
+    /// twice (strict mode only).
     RingsOverlap {
         /// The ring all of whose corners are shared.
         ring: usize,
@@ -116,7 +118,7 @@ impl fmt::Display for Error {
             ),
             Error::RingsOverlap { ring, vertex } => write!(
                 f,
-                "ring {ring} overlaps another ring: each of its corners (e.g. at vertex {vertex}) is also a corner of another ring"
+                "ring {ring} overlaps another ring: it lies on that ring's boundary (e.g. at vertex {vertex}) and would cover its inside twice"
             ),
             Error::HoleOutside { ring } => write!(
                 f,

@@ -23,7 +23,7 @@
 
 use crate::bridge::compare_hits;
 use crate::pool::NodeId;
-use crate::predicates::{left_of, on_segment, orient2d, Orientation, Point};
+use crate::predicates::{cmp_around, left_of, on_segment, orient2d, Orientation, Point};
 use crate::report::{DropReason, Dropped, RepairKind};
 use crate::triangulator::Context;
 use crate::{Error, Nesting};
@@ -107,27 +107,36 @@ fn compute_depths(cx: &mut Context) -> Result<(), Error> {
     index_all_edges(cx);
     cx.depth_known.clear();
     cx.depth_known.resize(cx.rings.len(), false);
+    cx.overlaps.clear();
     let mut order = core::mem::take(&mut cx.ring_order);
     order.clear();
     order.extend((0..cx.rings.len() as u32).filter(|&r| cx.rings[r as usize].alive));
     let (pool, rings) = (&cx.pool, &cx.rings);
     let x = |r: u32| pool.p(rings[r as usize].rightmost).x;
     order.sort_unstable_by(|&a, &b| x(b).total_cmp(&x(a)).then(a.cmp(&b)));
-    let mut result = Ok(());
     for &r in &order {
-        match depth_of(cx, r as usize) {
-            Ok(depth) => {
-                cx.rings[r as usize].depth = depth;
-                cx.depth_known[r as usize] = true;
-            }
-            Err(e) => {
-                result = Err(e);
-                break;
-            }
-        }
+        cx.rings[r as usize].depth = depth_of(cx, r as usize);
+        cx.depth_known[r as usize] = true;
     }
     cx.ring_order = order;
-    result
+    // b lies on q's boundary, inside q: valid only when q bounds b's region from outside
+    // and b bounds a hole in q's region (or the other way round), so that their windings
+    // cancel. Equal depths (the same ring twice, each inside the other, say) double it.
+    let rings = &cx.rings;
+    let overlapping = cx
+        .overlaps
+        .iter()
+        .find(|&&(b, q)| rings[b as usize].depth != rings[q as usize].depth + 1);
+    match overlapping {
+        Some(&(b, _)) if !cx.lenient => {
+            let ring = cx.rings[b as usize];
+            Err(Error::RingsOverlap {
+                ring: ring.input as usize,
+                vertex: cx.pool.get(ring.rightmost).vertex as usize,
+            })
+        }
+        _ => Ok(()),
+    }
 }
 
 /// Lists every live edge in the grid index.
@@ -153,61 +162,125 @@ pub(crate) fn index_all_edges(cx: &mut Context) {
 }
 
 /// The number of rings containing ring `b`, decided at its rightmost vertex — or, where
-/// another ring runs along both of b's edges there, at the next vertex that decides.
-fn depth_of(cx: &mut Context, b: usize) -> Result<u32, Error> {
+/// another ring runs along both of b's edges there, at the next vertex that decides, or
+/// at one of b's input vertices that cleaning dropped.
+fn depth_of(cx: &mut Context, b: usize) -> u32 {
     let first = cx.rings[b].rightmost;
     let mut v = first;
     loop {
         if let Some(depth) = depth_at(cx, b, v) {
-            return Ok(depth);
+            return depth;
         }
         v = cx.pool.next(v);
         if v == first {
             break;
         }
     }
-    // every corner of b coincides with a corner of another ring: the rings overlap
-    if cx.lenient {
-        return Ok(0);
-    }
-    let node = cx.pool.get(first);
-    Err(Error::RingsOverlap {
-        ring: cx.rings[b].input as usize,
-        vertex: node.vertex as usize,
-    })
+    depth_by_dropped(cx, b)
 }
 
-/// The depth of ring `b` decided at its node `v`, or `None` when a ring passing through
-/// v's position has the very same corner there.
-fn depth_at(cx: &mut Context, b: usize, v: NodeId) -> Option<u32> {
-    let pv = cx.pool.p(v);
-    // Rings passing through V: decided locally, left out of the winding number.
-    let touching = &mut cx.order;
-    touching.clear();
-    for n in cx.edge_grid.query(pv, pv) {
+/// The depth of ring `b`, every corner of which is a corner of other rings, decided at
+/// the positions of all its input vertices, the ones cleaning dropped included (the tip of
+/// a zero-width spike, say, may leave a ring b otherwise lies on): every other ring
+/// counts at the first position off it. A ring holding all of them has b's boundary on its
+/// own, with b's corners inside its corners: it contains b ([`compute_depths`] checks that
+/// their depths then differ by one, from `cx.overlaps`).
+fn depth_by_dropped(cx: &mut Context, b: usize) -> u32 {
+    // the nodes loaded for b lie together in the pool (nodes that splitting edges added
+    // may follow the last ring's: they lie on b too)
+    let at = cx.rings[b].start.idx();
+    let of_b = |i: &usize| cx.pool.nodes[*i].ring as usize == b;
+    let lo = (0..=at).rev().take_while(of_b).last().unwrap_or(at);
+    let hi = (at..cx.pool.nodes.len())
+        .take_while(of_b)
+        .last()
+        .unwrap_or(at);
+    let mut through = core::mem::take(&mut cx.probe_rings);
+    let mut counts = core::mem::take(&mut cx.touch_winding);
+    let mut depth = None;
+    for i in lo..=hi {
+        let p = cx.pool.nodes[i].p;
+        rings_through(cx, b, p, &mut through);
+        match depth {
+            // the first position: every ring off it decides here
+            None => {
+                cx.order.clear();
+                cx.order.extend_from_slice(&through);
+                counts.clear();
+                counts.resize(through.len(), 0);
+                let (winding, _) = winding_number(cx, b, p, &mut counts);
+                depth = Some(winding.max(0) as u32);
+            }
+            // the rings still open (`cx.order`) that miss this position decide here
+            Some(d) => {
+                counts.clear();
+                counts.resize(cx.order.len(), 0);
+                winding_number(cx, b, p, &mut counts);
+                let mut inside = 0;
+                let mut k = 0;
+                cx.order.retain(|r| {
+                    let open = through.contains(r);
+                    inside += u32::from(!open && counts[k] > 0);
+                    k += 1;
+                    open
+                });
+                depth = Some(d + inside);
+            }
+        }
+        if cx.order.is_empty() {
+            break;
+        }
+    }
+    cx.probe_rings = through;
+    cx.touch_winding = counts;
+    for &q in &cx.order {
+        cx.overlaps.push((b as u32, q));
+    }
+    depth.unwrap_or(0) + cx.order.len() as u32
+}
+
+/// The live rings other than `b` with an edge through `p`, into `out`.
+fn rings_through(cx: &Context, b: usize, p: Point, out: &mut Vec<u32>) {
+    out.clear();
+    for n in cx.edge_grid.query(p, p) {
         let node = cx.pool.get(n);
         let ring = node.ring;
         if ring as usize == b || node.removed || !cx.rings[ring as usize].alive {
             continue;
         }
-        if on_segment(node.p, cx.pool.p(node.next), pv) && !touching.contains(&ring) {
-            touching.push(ring);
+        if on_segment(node.p, cx.pool.p(node.next), p) && !out.contains(&ring) {
+            out.push(ring);
         }
     }
+}
+
+/// The depth of ring `b` decided at its node `v`, or `None` when both of b's edges at v
+/// run along rings passing through v's position.
+fn depth_at(cx: &mut Context, b: usize, v: NodeId) -> Option<u32> {
+    let pv = cx.pool.p(v);
+    // Rings passing through V: decided locally, their windings kept apart.
+    let mut touching = core::mem::take(&mut cx.order);
+    rings_through(cx, b, pv, &mut touching);
+    cx.order = touching;
     if cx.order.is_empty() && v == cx.rings[b].rightmost && cx.crossings.is_empty() {
         if let Some(depth) = depth_from_nearest(cx, b, pv) {
             return Some(depth);
         }
     }
-    let winding = winding_number(cx, b, pv);
-    let mut depth = winding.max(0) as u32;
-    for k in 0..cx.order.len() {
+    let mut beyond = core::mem::take(&mut cx.touch_winding);
+    beyond.clear();
+    beyond.resize(cx.order.len(), 0);
+    let (winding, ray) = winding_number(cx, b, pv, &mut beyond);
+    let mut depth = Some(winding.max(0) as u32);
+    for (k, &base) in beyond.iter().enumerate() {
         let r = cx.order[k] as usize;
-        if locally_inside(cx, v, r)? {
-            depth += 1;
-        }
+        depth = match (depth, locally_inside(cx, v, r, ray, base)) {
+            (Some(d), Some(inside)) => Some(d + u32::from(inside)),
+            _ => None,
+        };
     }
-    Some(depth)
+    cx.touch_winding = beyond;
+    depth
 }
 
 /// The depth of ring `b` read off the nearest edge e (of ring R) that the ray from `pv`,
@@ -340,8 +413,10 @@ impl Nearest {
 }
 
 /// The winding number of the rings other than `b` and those in `cx.order` (touching V)
-/// around `pv`, by a ray along the grid row or column with the fewest cells to the edge.
-fn winding_number(cx: &Context, b: usize, pv: Point) -> i64 {
+/// around `pv`, by a ray along the grid row or column with the fewest cells to the edge,
+/// and that ray. The crossings with the edges of `cx.order[k]` go to `touching[k]`
+/// instead (edges through `pv` cross nothing).
+fn winding_number(cx: &Context, b: usize, pv: Point, touching: &mut [i64]) -> (i64, Ray) {
     let grid = &cx.edge_grid;
     let (row, column) = (grid.row(pv.y), grid.column(pv.x));
     let (nx, ny) = (grid.columns(), grid.rows());
@@ -371,12 +446,15 @@ fn winding_number(cx: &Context, b: usize, pv: Point) -> i64 {
         if ring as usize == b
             || node.removed
             || !cx.rings[ring as usize].alive
-            || cx.order.contains(&ring)
             || at.is_some_and(|k| k != first)
         {
             return;
         }
-        winding += crossing(ray.turn(p), ray.turn(next), v);
+        let step = crossing(ray.turn(p), ray.turn(next), v);
+        match cx.order.iter().position(|&r| r == ring) {
+            Some(k) => touching[k] += step,
+            None => winding += step,
+        }
     };
     for &n in grid.long() {
         count(n, None);
@@ -409,7 +487,7 @@ fn winding_number(cx: &Context, b: usize, pv: Point) -> i64 {
             }
         }
     }
-    winding
+    (winding, ray)
 }
 
 /// A direction for the ray of a winding number.
@@ -446,37 +524,64 @@ fn crossing(a: Point, b: Point, v: Point) -> i64 {
     }
 }
 
-/// Whether ring `b`'s corner at node `v` lies inside ring `r`, which passes through `v`'s
-/// position: inside one of `r`'s corners there, or on the inner side of an edge of `r`
-/// running through it. `None` when a corner of `r` there is the very same corner.
-fn locally_inside(cx: &Context, v: NodeId, r: usize) -> Option<bool> {
+/// Whether ring `b` lies inside ring `r`, which passes through the position of b's node
+/// `v`, judged by the winding number of `r` next to v, where it is exact however often `r`
+/// passes through v (a ring touching itself there has several corners at v, none of which
+/// alone tells):
+///
+/// - on one of b's edges at v that does not run along `r` (a point of b's boundary off r,
+///   as the oracle probes it);
+/// - else, with both of b's edges along `r`, in every sector between r's edges inside b's
+///   corner: one outside `r` shows that b is not inside it; all inside leave it open
+///   (`None`), since b's corner may be r's very corner (a hole cancelling a lobe).
+///
+/// In the frame `ray` turns into, the direction d₀ just counter-clockwise of +x sees
+/// `base`: the crossings of the ray with r's edges that miss v, as [`winding_number`]
+/// counts them. From d₀ counter-clockwise, every ray from v along an edge of `r` changes
+/// the winding number by one: +1 where the edge leaves v (its left side, the inside,
+/// follows), −1 where it arrives.
+fn locally_inside(cx: &Context, v: NodeId, r: usize, ray: Ray, base: i64) -> Option<bool> {
     let pv = cx.pool.p(v);
-    let (vn, vp) = (cx.pool.p(cx.pool.next(v)), cx.pool.p(cx.pool.prev(v)));
-    let mut inside = false;
-    for n in cx.edge_grid.query(pv, pv) {
-        let node = cx.pool.get(n);
-        if node.ring as usize != r || node.removed {
-            continue;
-        }
-        let next = cx.pool.p(node.next);
-        if node.p == pv {
-            let prev = cx.pool.p(node.prev);
-            match corner_contains(pv, next, prev, vn)
-                .or_else(|| corner_contains(pv, next, prev, vp))
-            {
-                Some(true) => inside = true,
-                Some(false) => {}
-                // b's edges run along both of r's: complementary corners are disjoint,
-                // identical ones undecidable here
-                None if same_ray(pv, vn, prev) => {}
-                None => return None,
-            }
-        } else if next != pv && on_segment(node.p, next, pv) {
-            // V inside an edge of r (only after a lenient repair): the edge's left side
-            inside |= left_of(node.p, next, vn) || left_of(node.p, next, vp);
-        }
+    let o = ray.turn(pv);
+    // r's edges through v, as turned points: the edge's start and end
+    let edges = || {
+        cx.edge_grid.query(pv, pv).filter_map(move |n| {
+            let node = cx.pool.get(n);
+            let next = cx.pool.p(node.next);
+            (node.ring as usize == r && !node.removed && on_segment(node.p, next, pv))
+                .then(|| (ray.turn(node.p), ray.turn(next)))
+        })
+    };
+    let along_r = |d: Point| {
+        edges().any(|(from, to)| [from, to].into_iter().any(|e| e != o && on_ray(o, e, d)))
+    };
+    // The winding number just counter-clockwise of the direction o → d: every ray up to
+    // and along it counts; rays along +x lie before d₀ and never count.
+    let winding_after = |d: Point| {
+        let counts = |e: Point| e != o && !(e.y == o.y && e.x > o.x) && cmp_around(o, e, d).is_le();
+        edges().fold(base, |w, (from, to)| {
+            w + i64::from(counts(to)) - i64::from(counts(from))
+        })
+    };
+    let (vn, vp) = (
+        ray.turn(cx.pool.p(cx.pool.next(v))),
+        ray.turn(cx.pool.p(cx.pool.prev(v))),
+    );
+    if let Some(d) = [vn, vp].into_iter().find(|&d| !along_r(d)) {
+        return Some(winding_after(d) > 0);
     }
-    Some(inside)
+    let inside_corner = |e: Point| e != o && corner_contains(o, vn, vp, e) == Some(true);
+    let sectors = core::iter::once(vn).chain(
+        edges()
+            .flat_map(|(from, to)| [from, to])
+            .filter(|&e| inside_corner(e)),
+    );
+    let mut sectors = sectors.map(winding_after);
+    if sectors.any(|w| w <= 0) {
+        Some(false)
+    } else {
+        None
+    }
 }
 
 /// Whether the direction from `o` to `q` lies inside the corner at `o` swept
@@ -504,6 +609,11 @@ pub(crate) fn corner_contains(o: Point, a: Point, b: Point, q: Point) -> Option<
         Orientation::Collinear => !same_ray(o, a, b) && qa == Orientation::CounterClockwise,
     };
     Some(inside)
+}
+
+/// Whether `q` lies on the ray from `o` through `a` (`a`, `q` ≠ `o`). Exact.
+pub(crate) fn on_ray(o: Point, a: Point, q: Point) -> bool {
+    orient2d(o, a, q) == Orientation::Collinear && same_ray(o, a, q)
 }
 
 /// For points known to be collinear with `o`: whether `a` and `q` lie on the same ray from

@@ -79,6 +79,12 @@ pub(crate) struct Context {
     /// Scratch of `nest`: rings by descending rightmost x, and whose depth is known yet.
     pub ring_order: Vec<u32>,
     pub depth_known: Vec<bool>,
+    /// Scratch of `nest`: the winding number of each ring touching a vertex, away from it.
+    pub touch_winding: Vec<i64>,
+    /// Scratch of `nest`: the rings passing through a position.
+    pub probe_rings: Vec<u32>,
+    /// Scratch of `nest`: (b, q) where ring b lies on ring q's boundary, inside it.
+    pub overlaps: Vec<(u32, u32)>,
     /// Scratch: edges by start node (lenient crossing flags).
     pub edges: Vec<NodeId>,
     pub touches: Vec<validate::Touch>,

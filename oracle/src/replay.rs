@@ -57,20 +57,11 @@ pub const KNOWN_GAPS: [KnownGap; 0] = [];
 /// The weakly simple cases `polytri precision` found
 /// (`cases/ring_doubles_back_along_its_own_edge`, `cases/zero_area_hole_of_collinear_points`,
 /// `cases/spiral_collapsed_by_f32_rounding`) pass since the oracle's contract says
-/// zero-width boundary parts enclose nothing and touch orders edges of one direction. Two
-/// rings lying on each other, found by `raw_rings` with other seeds, do not yet.
-pub const KNOWN_FAILURES: [KnownFailure; 2] = [
-    KnownFailure {
-        case: "cases/hole_equal_to_its_outer_ring_with_spikes",
-        strategies: &["fast", "quality"],
-        issue: "2",
-    },
-    KnownFailure {
-        case: "cases/ring_touching_a_triangle_at_all_its_corners",
-        strategies: &["fast", "quality"],
-        issue: "2",
-    },
-];
+/// zero-width boundary parts enclose nothing and touch orders edges of one direction; the
+/// rings lying on each other that `raw_rings` found (`cases/hole_equal_to_its_outer_ring_with_spikes`,
+/// `cases/ring_touching_a_triangle_at_all_its_corners`) since nesting counts winding
+/// numbers next to shared vertices exactly.
+pub const KNOWN_FAILURES: [KnownFailure; 0] = [];
 
 /// A case polytri still gets wrong; see [`KNOWN_FAILURES`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -1,0 +1,220 @@
+//! Rings lying on each other, against the oracle: copies of a ring (the same way round or
+//! reversed, from any start), copies with a zero-width spike out of or into the ring,
+//! copies inside a third ring, and a ring touching itself where another ring touches it.
+//! `raw_rings` found such inputs where polytri's nesting and the oracle's disagreed.
+//!
+//! For every configuration, in four exact rotations, with every ring in both windings and
+//! with both nesting conventions (automatic, and earcut's first-is-outer):
+//! strict mode triangulates exactly the inputs the oracle finds valid (and the oracle
+//! accepts the result), and lenient mode always gives a result, a valid one where the input
+//! is valid.
+
+use polytri::{Nesting as TriNesting, Options, Strategy, Triangulator};
+use polytri_oracle::{check_with, CheckOptions, Input, Nesting};
+
+type Ring = Vec<[f64; 2]>;
+
+fn triangle() -> Ring {
+    vec![[1.0, 0.0], [3.0, 2.0], [1.0, 1.0]]
+}
+
+fn square() -> Ring {
+    vec![[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]]
+}
+
+/// A square with a notch cut into its bottom edge: every corner of [`square`] is its
+/// corner too.
+fn notched_square() -> Ring {
+    vec![
+        [0.0, 0.0],
+        [1.0, 0.0],
+        [2.0, 1.0],
+        [3.0, 0.0],
+        [4.0, 0.0],
+        [4.0, 4.0],
+        [0.0, 4.0],
+    ]
+}
+
+/// `ring` from its `k`-th vertex on.
+fn from(ring: &Ring, k: usize) -> Ring {
+    let k = k % ring.len();
+    ring[k..].iter().chain(&ring[..k]).copied().collect()
+}
+
+fn reversed(ring: &Ring) -> Ring {
+    ring.iter().rev().copied().collect()
+}
+
+/// `ring` with a zero-width spike from its vertex `k` to `tip` and back.
+fn spiked(ring: &Ring, k: usize, tip: [f64; 2]) -> Ring {
+    let mut out = ring[..=k].to_vec();
+    out.push(tip);
+    out.extend_from_slice(&ring[k..]);
+    out
+}
+
+/// The configurations, each a list of rings.
+fn configurations() -> Vec<(String, Vec<Ring>)> {
+    let mut out = Vec::new();
+    for (name, base, outside, inside) in [
+        ("triangle", triangle(), [0.0, 0.0], [2.0, 1.0]),
+        ("square", square(), [-2.0, -2.0], [2.0, 2.0]),
+    ] {
+        for k in 0..base.len() {
+            out.push((
+                format!("{name} twice from {k}"),
+                vec![base.clone(), from(&base, k)],
+            ));
+            out.push((
+                format!("{name} and its reverse from {k}"),
+                vec![base.clone(), reversed(&from(&base, k))],
+            ));
+        }
+        for (side, tip) in [("out", outside), ("in", inside)] {
+            let spike = spiked(&base, 0, tip);
+            out.push((
+                format!("{name} and a copy spiked {side}"),
+                vec![base.clone(), spike.clone()],
+            ));
+            out.push((
+                format!("{name} spiked {side} and a copy"),
+                vec![spike.clone(), base.clone()],
+            ));
+            out.push((
+                format!("{name} and a reversed copy spiked {side}"),
+                vec![base.clone(), reversed(&spike)],
+            ));
+            let frame = vec![[-10.0, -10.0], [10.0, -10.0], [10.0, 10.0], [-10.0, 10.0]];
+            out.push((
+                format!("{name} and a copy spiked {side}, in a frame"),
+                vec![frame.clone(), base.clone(), spike],
+            ));
+        }
+        out.push((
+            format!("{name} three times"),
+            vec![base.clone(), from(&base, 1), from(&base, 2)],
+        ));
+    }
+    out.push((
+        "square and a notched square".into(),
+        vec![square(), notched_square()],
+    ));
+    out.push((
+        "notched square and a square".into(),
+        vec![notched_square(), square()],
+    ));
+    // a ring touching itself at (0, -1), where a triangle touches both of its lobes along
+    // an edge each (raw_rings, seed 13)
+    let lobes = vec![
+        [0.0, 9.0],
+        [0.0, -1.0],
+        [10.0, 11.0],
+        [-1.0, -8.0],
+        [0.0, -1.0],
+        [-1.0, 15.0],
+    ];
+    let wedge = vec![[-1.0, -8.0], [0.0, -1.0], [-1.0, 15.0]];
+    out.push((
+        "lobes and a wedge".into(),
+        vec![wedge.clone(), lobes.clone()],
+    ));
+    out.push(("wedge and lobes".into(), vec![lobes, wedge]));
+    out
+}
+
+/// `rings` turned by `quarter` quarter turns (exact) with ring `r` reversed where bit r of
+/// `flips` is set.
+fn variant(rings: &[Ring], quarter: u32, flips: u32, nesting: Nesting) -> Input {
+    let turn = |[x, y]: [f64; 2]| match quarter % 4 {
+        0 => [x, y],
+        1 => [-y, x],
+        2 => [-x, -y],
+        _ => [y, -x],
+    };
+    let mut vertices = Vec::new();
+    let mut starts = Vec::new();
+    for (r, ring) in rings.iter().enumerate() {
+        starts.push(vertices.len());
+        let ring = if flips >> r & 1 == 1 {
+            reversed(ring)
+        } else {
+            ring.clone()
+        };
+        vertices.extend(ring.into_iter().map(turn));
+    }
+    Input::new(vertices, starts, nesting)
+}
+
+fn run(input: &Input, strategy: Strategy, lenient: bool) -> Result<Vec<[u32; 3]>, String> {
+    let nesting = match input.nesting {
+        Nesting::FirstIsOuter => TriNesting::FirstIsOuter,
+        _ => TriNesting::Auto,
+    };
+    let options = Options::default()
+        .with_strategy(strategy)
+        .with_nesting(nesting)
+        .with_lenient(lenient);
+    let mut out = Vec::new();
+    Triangulator::<f64>::new()
+        .triangulate(&input.vertices, &input.ring_starts, &options, &mut out)
+        .map(|_| out)
+        .map_err(|e| e.to_string())
+}
+
+#[test]
+fn strict_mode_accepts_exactly_what_the_oracle_calls_valid() {
+    let mut failures = Vec::new();
+    let (mut valid, mut invalid) = (0, 0);
+    for (name, rings) in configurations() {
+        for (quarter, nesting) in
+            (0..4).flat_map(|q| [(q, Nesting::Auto), (q, Nesting::FirstIsOuter)])
+        {
+            for flips in 0..1u32 << rings.len() {
+                let input = variant(&rings, quarter, flips, nesting.clone());
+                let judged = check_with(&input, &[], &CheckOptions::fast());
+                let input_valid = judged.input_valid;
+                if input_valid {
+                    valid += 1;
+                } else {
+                    invalid += 1;
+                }
+                let what = format!("{name}, {quarter} quarter turns, flips {flips:b}, {nesting:?}");
+                for strategy in [Strategy::Fast, Strategy::Quality] {
+                    for lenient in [false, true] {
+                        let run_name = format!("{what}, {strategy:?}, lenient {lenient}");
+                        match run(&input, strategy, lenient) {
+                            Ok(triangles) if input_valid => {
+                                let verdict =
+                                    check_with(&input, &triangles, &CheckOptions::fast());
+                                if !verdict.valid {
+                                    failures.push(format!("{run_name}: {:?}", verdict.failures()));
+                                }
+                            }
+                            Ok(_) if !lenient => failures.push(format!(
+                                "{run_name}: accepted, but the oracle finds the input invalid: {:?}",
+                                judged.failures()
+                            )),
+                            Ok(_) => {}
+                            Err(e) if lenient || input_valid => {
+                                failures.push(format!("{run_name}: refused: {e}"));
+                            }
+                            Err(_) => {}
+                        }
+                    }
+                }
+            }
+        }
+    }
+    // both kinds occur, so neither half of the property is vacuous
+    assert!(
+        valid > 50 && invalid > 50,
+        "{valid} valid, {invalid} invalid"
+    );
+    assert!(
+        failures.is_empty(),
+        "{} failures:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
+}

@@ -61,6 +61,7 @@ pub(crate) fn clean(cx: &mut Context, untwist: bool) -> Result<bool, Error> {
     canonical_vertices(cx);
     // nodes from here on are the ones edge splits add
     let first_split = cx.pool.len();
+    cx.loaded_nodes = first_split;
     split_touched_edges(cx);
     collect_shared(cx, first_split);
     for r in 0..cx.rings.len() {

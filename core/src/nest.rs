@@ -179,64 +179,101 @@ fn depth_of(cx: &mut Context, b: usize) -> u32 {
     depth_by_dropped(cx, b)
 }
 
-/// The depth of ring `b`, every corner of which is a corner of other rings, decided at
-/// the positions of all its input vertices, the ones cleaning dropped included (the tip of
-/// a zero-width spike, say, may leave a ring b otherwise lies on): every other ring
-/// counts at the first position off it. A ring holding all of them has b's boundary on its
-/// own, with b's corners inside its corners: it contains b ([`compute_depths`] checks that
-/// their depths then differ by one, from `cx.overlaps`).
+/// The depth of ring `b`, every corner of which lies on other rings with both its edges.
+/// At b's rightmost vertex every ring is decided but those (the open rings); each of them
+/// is decided at the first of b's input vertices off it, the ones cleaning dropped
+/// included (the tip of a zero-width spike, say, may leave a ring that b otherwise lies
+/// on). "Off" counts the edges cleaning dropped, as the oracle does. An open ring holding
+/// all of them has b's boundary on its own, with b's corners inside its corners: it
+/// contains b ([`compute_depths`] checks that their depths then differ by one, from
+/// `cx.overlaps`).
 fn depth_by_dropped(cx: &mut Context, b: usize) -> u32 {
-    // the nodes loaded for b lie together in the pool (nodes that splitting edges added
-    // may follow the last ring's: they lie on b too)
-    let at = cx.rings[b].start.idx();
-    let of_b = |i: &usize| cx.pool.nodes[*i].ring as usize == b;
-    let lo = (0..=at).rev().take_while(of_b).last().unwrap_or(at);
-    let hi = (at..cx.pool.nodes.len())
-        .take_while(of_b)
-        .last()
-        .unwrap_or(at);
-    let mut through = core::mem::take(&mut cx.probe_rings);
+    let v = cx.rings[b].rightmost;
+    let pv = cx.pool.p(v);
+    let mut touching = core::mem::take(&mut cx.order);
+    rings_through(cx, b, pv, &mut touching);
+    cx.order = touching;
     let mut counts = core::mem::take(&mut cx.touch_winding);
-    let mut depth = None;
-    for i in lo..=hi {
-        let p = cx.pool.nodes[i].p;
-        rings_through(cx, b, p, &mut through);
-        match depth {
-            // the first position: every ring off it decides here
+    counts.clear();
+    counts.resize(cx.order.len(), 0);
+    let (winding, ray) = winding_number(cx, b, pv, &mut counts);
+    let mut depth = winding.max(0) as u32;
+    let mut open = 0;
+    for (k, &base) in counts.iter().enumerate() {
+        let q = cx.order[k];
+        match locally_inside(cx, v, q as usize, ray, base) {
+            Some(inside) => depth += u32::from(inside),
             None => {
-                cx.order.clear();
-                cx.order.extend_from_slice(&through);
-                counts.clear();
-                counts.resize(through.len(), 0);
-                let (winding, _) = winding_number(cx, b, p, &mut counts);
-                depth = Some(winding.max(0) as u32);
-            }
-            // the rings still open (`cx.order`) that miss this position decide here
-            Some(d) => {
-                counts.clear();
-                counts.resize(cx.order.len(), 0);
-                winding_number(cx, b, p, &mut counts);
-                let mut inside = 0;
-                let mut k = 0;
-                cx.order.retain(|r| {
-                    let open = through.contains(r);
-                    inside += u32::from(!open && counts[k] > 0);
-                    k += 1;
-                    open
-                });
-                depth = Some(d + inside);
+                cx.order[open] = q;
+                open += 1;
             }
         }
+    }
+    cx.order.truncate(open);
+    // the edges of the open rings that cleaning dropped: each has a dropped end
+    let mut dropped = core::mem::take(&mut cx.dropped_edges);
+    dropped.clear();
+    for &q in &cx.order {
+        let block = loaded(cx, q as usize);
+        let at = |i: usize| cx.pool.nodes[i].p;
+        for i in block.clone() {
+            if cx.pool.nodes[i].removed {
+                let before = if i == *block.start() {
+                    *block.end()
+                } else {
+                    i - 1
+                };
+                dropped.push((q, at(before), at(i)));
+            }
+            let after = if i == *block.end() {
+                *block.start()
+            } else {
+                i + 1
+            };
+            if cx.pool.nodes[i].removed && !cx.pool.nodes[after].removed {
+                dropped.push((q, at(i), at(after)));
+            }
+        }
+    }
+    let mut through = core::mem::take(&mut cx.probe_rings);
+    for i in loaded(cx, b) {
         if cx.order.is_empty() {
             break;
         }
+        let p = cx.pool.nodes[i].p;
+        rings_through(cx, b, p, &mut through);
+        counts.clear();
+        counts.resize(cx.order.len(), 0);
+        winding_number(cx, b, p, &mut counts);
+        let mut k = 0;
+        cx.order.retain(|q| {
+            let on_q = through.contains(q)
+                || dropped
+                    .iter()
+                    .any(|&(r, a, c)| r == *q && on_segment(a, c, p));
+            depth += u32::from(!on_q && counts[k] > 0);
+            k += 1;
+            on_q
+        });
     }
     cx.probe_rings = through;
     cx.touch_winding = counts;
+    cx.dropped_edges = dropped;
     for &q in &cx.order {
         cx.overlaps.push((b as u32, q));
     }
-    depth.unwrap_or(0) + cx.order.len() as u32
+    depth + cx.order.len() as u32
+}
+
+/// The pool indices of the nodes loaded for ring `r`, in input order: they lie together,
+/// around its rightmost node (a loaded node, never a split one).
+fn loaded(cx: &Context, r: usize) -> core::ops::RangeInclusive<usize> {
+    let nodes = &cx.pool.nodes[..cx.loaded_nodes.min(cx.pool.nodes.len())];
+    let at = cx.rings[r].rightmost.idx();
+    let of_r = |i: &usize| nodes.get(*i).is_some_and(|n| n.ring as usize == r);
+    let lo = (0..=at).rev().take_while(of_r).last().unwrap_or(at);
+    let hi = (at..nodes.len()).take_while(of_r).last().unwrap_or(at);
+    lo..=hi
 }
 
 /// The live rings other than `b` with an edge through `p`, into `out`.

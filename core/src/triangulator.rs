@@ -85,6 +85,11 @@ pub(crate) struct Context {
     pub probe_rings: Vec<u32>,
     /// Scratch of `nest`: (b, q) where ring b lies on ring q's boundary, inside it.
     pub overlaps: Vec<(u32, u32)>,
+    /// The nodes loaded from the input (in input order, ring after ring) are the first
+    /// `loaded_nodes` of the pool; edge splits add the rest.
+    pub loaded_nodes: usize,
+    /// Scratch of `nest`: edges that cleaning dropped, with their rings.
+    pub dropped_edges: Vec<(u32, crate::predicates::Point, crate::predicates::Point)>,
     /// Scratch: edges by start node (lenient crossing flags).
     pub edges: Vec<NodeId>,
     pub touches: Vec<validate::Touch>,

@@ -104,6 +104,26 @@ fn configurations() -> Vec<(String, Vec<Ring>)> {
         "notched square and a square".into(),
         vec![notched_square(), square()],
     ));
+    // a triangle with a spike, and a copy with spikes along the first one's and out
+    // (raw_rings, seed 21): the first spike's tip lies on the copy, so it decides nothing
+    let spiked_triangle = vec![[0.0, 15.0], [0.0, 0.0], [1.0, 0.0], [0.0, 10.0]];
+    let copy = vec![
+        [0.0, 0.0],
+        [1.0, 0.0],
+        [0.0, 10.0],
+        [0.0, 0.0],
+        [0.0, 15.0],
+        [0.0, 0.0],
+        [-5.0, 13.0],
+    ];
+    out.push((
+        "spiked triangle and a copy spiked along it".into(),
+        vec![spiked_triangle.clone(), copy.clone()],
+    ));
+    out.push((
+        "copy spiked along a spiked triangle".into(),
+        vec![copy, spiked_triangle],
+    ));
     // a ring touching itself at (0, -1), where a triangle touches both of its lobes along
     // an edge each (raw_rings, seed 13)
     let lobes = vec![

@@ -54,6 +54,36 @@ struct Stars {
     first_sum_end: HashMap<u32, usize>,
 }
 
+/// A ring's points without repeats (cyclically) and without the tips of zero-width
+/// spikes (a point whose two neighbours lie on one ray from it), removed until none is
+/// left; fewer than three points when nothing encloses area.
+fn without_spikes(mut ring: Vec<P>) -> Vec<P> {
+    let mut k = 0;
+    let mut steady = 0;
+    while ring.len() >= 3 && steady < ring.len() {
+        let len = ring.len();
+        let (u, c, w) = (
+            ring[(k + len - 1) % len],
+            ring[k % len],
+            ring[(k + 1) % len],
+        );
+        let spike = c == w
+            || (orient(u, c, w) == Ordering::Equal
+                && (u[0] - c[0]).signum() == (w[0] - c[0]).signum()
+                && (u[1] - c[1]).signum() == (w[1] - c[1]).signum());
+        if spike {
+            ring.remove(k % len);
+            // the point before may have become a tip: look again from there
+            k = (k + len - 2) % (len - 1);
+            steady = 0;
+        } else {
+            k = (k + 1) % len;
+            steady += 1;
+        }
+    }
+    ring
+}
+
 /// `a` before `b` by x, then y.
 fn lex_less(a: P, b: P) -> bool {
     (a[0], a[1]) < (b[0], b[1])
@@ -402,24 +432,19 @@ impl Region {
     /// A point strictly inside the ring `range` and off its boundary, when the corner
     /// triangle at its lowest (then leftmost) vertex is empty: then no ring edge enters
     /// that triangle (it would have to cross one of the corner's edges or end inside), so
-    /// the triangle's centroid lies inside.
+    /// the triangle's centroid lies inside. Zero-width spikes enclose nothing, so the
+    /// corner is taken on the ring without them (a spike's tip may be the lowest point).
     fn inner_probe(&self, range: std::ops::Range<usize>) -> Option<Probe> {
         let pts = &self.pts;
-        let low = |i: &usize| (pts[*i][1], pts[*i][0]);
-        let v = range
-            .clone()
-            .min_by(|i, j| low(i).partial_cmp(&low(j)).unwrap_or(Ordering::Equal))?;
-        let len = range.len();
-        let at = |k: usize| range.start + k % len;
-        let k = v - range.start;
-        // The nearest neighbours at other positions, both ways round.
-        let next = (1..len)
-            .map(|d| at(k + d))
-            .find(|&i| self.rep[i] != self.rep[v])?;
-        let prev = (1..len)
-            .map(|d| at(k + len - d))
-            .find(|&i| self.rep[i] != self.rep[v])?;
-        let (u, w, c) = (pts[prev], pts[next], pts[v]);
+        let ring = without_spikes(range.clone().map(|i| pts[i]).collect());
+        let low = |p: &P| (p[1], p[0]);
+        let k = (0..ring.len()).min_by(|&i, &j| {
+            low(&ring[i])
+                .partial_cmp(&low(&ring[j]))
+                .unwrap_or(Ordering::Equal)
+        })?;
+        let len = ring.len();
+        let (u, c, w) = (ring[(k + len - 1) % len], ring[k], ring[(k + 1) % len]);
         let turn = orient(u, c, w);
         if turn == Ordering::Equal {
             return None;

@@ -75,8 +75,13 @@ fn eliminate_hole(cx: &mut Context, hole: usize) -> Result<(), Error> {
                 // inside out. The careful run bridges from a vertex of the hole that sees
                 // its target properly; the others keep the ray's choice (see `triangulate`).
                 cx.bridge_left = true;
-                let careful = cx.careful_bridges;
-                match bridge_from_elsewhere(cx, m, true).filter(|_| careful) {
+                // (only the careful run looks for that vertex: the search is costly)
+                let elsewhere = if cx.careful_bridges {
+                    bridge_from_elsewhere(cx, m, true)
+                } else {
+                    None
+                };
+                match elsewhere {
                     Some((other, x)) => {
                         m = other;
                         Target::Visible(x)

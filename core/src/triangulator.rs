@@ -95,6 +95,8 @@ pub(crate) struct Context {
     /// Lenient mode with crossings: the input's area (outer rings minus holes, by the
     /// shoelace formula as earcut measures it) and snapshots for a second clipping try.
     pub area: f64,
+    /// Lenient mode with crossings: the deviation of the last run's result from `area`.
+    pub deviation: f64,
     pub saved_nodes: Vec<crate::pool::Node>,
     pub saved_rings: Vec<Ring>,
     pub saved_repairs: Vec<Repair>,
@@ -162,14 +164,21 @@ fn run<T: Coord>(
     let polygons = if cx.lenient && !cx.crossings.is_empty() {
         clip_best_effort(cx, vertices, options.strategy, out)?
     } else {
-        clip::clip(cx, options.strategy, false, out)?
+        let polygons = clip::clip(cx, options.strategy, false, out)?;
+        if untwist {
+            // untwisting uncrossed every crossing edge: one clip, measured all the same
+            cx.deviation = deviation(cx.area, vertices, out);
+        }
+        polygons
     };
     Ok(Some((polygons, holes)))
 }
 
 /// Lenient mode, input with crossing edges: no triangulation covers it exactly, so clip
 /// twice from the same bridged rings — with ears at crossed edges deferred and without —
-/// and keep the result whose area is closer to the input's (earcut's deviation measure).
+/// and keep the result whose area is closer to the input's (earcut's deviation measure),
+/// recorded in `cx.deviation`. A first result covering the area exactly cannot be beaten,
+/// so then the second clip is skipped.
 fn clip_best_effort<T: Coord>(
     cx: &mut Context,
     vertices: &[[T; 2]],
@@ -183,6 +192,10 @@ fn clip_best_effort<T: Coord>(
     let repairs_before = cx.repairs.len();
     let polygons = clip::clip(cx, strategy, false, out)?;
     let plain = deviation(cx.area, vertices, out);
+    cx.deviation = plain;
+    if plain == 0.0 {
+        return Ok(polygons);
+    }
     // keep the first try's repairs aside, restore the rings, try again
     cx.saved_repairs.clear();
     cx.saved_repairs
@@ -204,6 +217,7 @@ fn clip_best_effort<T: Coord>(
         // copy, not swap: the caller's buffer keeps its capacity
         out.clear();
         out.extend_from_slice(&alt);
+        cx.deviation = deferred;
     } else {
         cx.repairs.truncate(repairs_before);
         cx.repairs.extend_from_slice(&cx.saved_repairs);
@@ -355,29 +369,29 @@ impl<T: Coord> Triangulator<T> {
         if cx.lenient && !cx.crossings.is_empty() {
             // Crossing edges have no exact triangulation: try again with bow ties
             // uncrossed, and where a bridge left the polygon, with bridges chosen
-            // carefully; keep whichever covers the input's area most closely.
-            let mut best = deviation(cx.area, vertices, out);
-            let mut bridge_left = cx.bridge_left;
+            // carefully; keep whichever covers the input's area most closely. A run
+            // covering it exactly cannot be beaten: then the others are skipped.
+            let mut best = cx.deviation;
+            // Bridges are chosen carefully only where one leaves the polygon, so without
+            // that in this run (bow ties as given) the careful run would repeat it.
+            let careful_may_help = cx.bridge_left;
             cx.first_dropped.clear();
             cx.first_dropped.extend_from_slice(&cx.dropped);
             cx.first_repairs.clear();
             cx.first_repairs.extend_from_slice(&cx.repairs);
             let mut alt = core::mem::take(&mut cx.alt_untwisted);
             for untwist in [true, false] {
-                if !untwist {
-                    if !bridge_left {
-                        break;
-                    }
-                    // Careful bridges, bow ties as given: which of the two kinds of run
-                    // goes better with them varies, and one more run is enough here.
-                    cx.careful_bridges = true;
+                if best == 0.0 || (!untwist && !careful_may_help) {
+                    break;
                 }
+                // Careful bridges, bow ties as given: which of the two kinds of run goes
+                // better with them varies, and one more run is enough here.
+                cx.careful_bridges = !untwist;
                 let next = run(cx, vertices, ring_starts, options, untwist, &mut alt);
-                bridge_left |= cx.bridge_left;
                 cx.careful_bridges = false;
                 match next {
-                    Ok(Some(counts)) if deviation(cx.area, vertices, &alt) < best => {
-                        best = deviation(cx.area, vertices, &alt);
+                    Ok(Some(counts)) if cx.deviation < best => {
+                        best = cx.deviation;
                         (polygons, holes) = counts;
                         // copy, not swap: the caller's buffer keeps its capacity
                         out.clear();

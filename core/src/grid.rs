@@ -20,6 +20,10 @@ const MAX_CELLS: usize = 32;
 /// by the number of edges, also for long thin edges such as a comb's teeth.
 const MAX_THIN: usize = 4;
 
+/// Up to this many edges, [`EdgeGrid`] has one cell: looking at every edge costs less
+/// than placing them in cells.
+const ONE_CELL: usize = 32;
+
 /// End of a cell's entry list.
 const END: u32 = u32::MAX;
 
@@ -51,8 +55,13 @@ pub(crate) struct EdgeGrid {
 impl EdgeGrid {
     /// Empties the index and sizes it for `edges` edges within the box `lo..=hi`: about
     /// one cell per two edges, shaped like the box, so a cell holds a handful of edges.
+    /// Up to [`ONE_CELL`] edges, one cell holds them all.
     pub fn reset(&mut self, lo: Point, hi: Point, edges: usize) {
-        let cells = (edges / 2).clamp(1, 1 << 22);
+        let cells = if edges <= ONE_CELL {
+            1
+        } else {
+            (edges / 2).clamp(1, 1 << 22)
+        };
         let (w, h) = (hi.x - lo.x, hi.y - lo.y);
         let (nx, ny) = shape(cells, w, h);
         (self.x0, self.y0, self.nx, self.ny) = (lo.x, lo.y, nx, ny);
@@ -91,6 +100,11 @@ impl EdgeGrid {
     /// Lists the edge starting at `n`, running from `a` to `b`.
     pub fn insert(&mut self, n: NodeId, a: Point, b: Point) {
         if self.head.is_empty() {
+            return;
+        }
+        if self.nx == 1 && self.ny == 1 {
+            // every box touches the only cell
+            self.push(0, n);
             return;
         }
         let (c0, c1) = (self.column(a.x.min(b.x)), self.column(a.x.max(b.x)));

@@ -71,6 +71,9 @@ struct Chain {
 /// two, and takes the grid).
 const EDGES_PER_CHAIN: usize = 4;
 
+/// Up to this many edges, comparing every pair of boxes is cheaper than sorting them.
+const TINY: usize = 32;
+
 /// Up to this many edges, sorting the boxes is cheaper than a grid or chains.
 const SMALL: usize = 512;
 
@@ -178,7 +181,10 @@ fn scan(
     visit: impl FnMut(&EdgeBox, &EdgeBox) -> bool,
 ) -> Scan {
     let budget = per_edge * scratch.boxes.len() + 64;
-    if scratch.boxes.len() <= SMALL {
+    let n = scratch.boxes.len();
+    if n <= TINY && n * n.saturating_sub(1) / 2 <= budget {
+        scan_pairs(&scratch.boxes, visit)
+    } else if n <= SMALL {
         sort_by_left(&mut scratch.boxes, &mut scratch.merged, &mut scratch.runs);
         scan_sorted(&scratch.boxes, budget, visit)
     } else if collect_chains(pool, &scratch.boxes, &mut scratch.chains) {
@@ -400,6 +406,18 @@ fn sort_by_left(boxes: &mut Vec<EdgeBox>, merged: &mut Vec<EdgeBox>, runs: &mut 
         boxes.clear();
         boxes.extend_from_slice(merged);
     }
+}
+
+/// A handful of edges: compare every pair's boxes, which costs less than sorting them.
+fn scan_pairs(boxes: &[EdgeBox], mut visit: impl FnMut(&EdgeBox, &EdgeBox) -> bool) -> Scan {
+    for (i, e) in boxes.iter().enumerate() {
+        for f in &boxes[i + 1..] {
+            if f.x0 <= e.x1 && e.x0 <= f.x1 && f.y0 <= e.y1 && e.y0 <= f.y1 && visit(e, f) {
+                return Scan::Stopped;
+            }
+        }
+    }
+    Scan::Done
 }
 
 /// A few edges, sorted by the left sides of their boxes: compare each with the boxes that

@@ -144,11 +144,15 @@ fn collect_boxes(
             if let Some(nodes) = nodes.as_deref_mut() {
                 nodes.push(n);
             }
+            // coordinates are finite (load dropped or refused the others): plain
+            // comparisons, without `f64::min`'s NaN handling
+            let (x0, x1) = if b.x < a.x { (b.x, a.x) } else { (a.x, b.x) };
+            let (y0, y1) = if b.y < a.y { (b.y, a.y) } else { (a.y, b.y) };
             boxes.push(EdgeBox {
-                x0: a.x.min(b.x),
-                x1: a.x.max(b.x),
-                y0: a.y.min(b.y),
-                y1: a.y.max(b.y),
+                x0,
+                x1,
+                y0,
+                y1,
                 from: n,
                 to: next,
             });

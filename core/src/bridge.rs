@@ -385,13 +385,14 @@ fn least_angle_in_triangle(
     let box_lo = Point::new(pm.x, ylo);
     let box_hi = Point::new(pa.x.max(pb.x), yhi);
     for r in cx.edge_grid.query(box_lo, box_hi) {
+        // the position first: most candidates fail there, without a look at their ring
         let node = cx.pool.get(r);
-        if node.removed || cx.rings[node.ring as usize].component != component {
-            continue;
-        }
         let q = node.p;
         let strictly_beside_ray = if above { q.y > pm.y } else { q.y < pm.y };
         if !strictly_beside_ray || q.y < ylo || q.y > yhi || q.x < pm.x || q == p {
+            continue;
+        }
+        if node.removed || cx.rings[node.ring as usize].component != component {
             continue;
         }
         if !left_of(pa, pb, q) || orient2d(pm, p, q) == outside_mp {

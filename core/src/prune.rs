@@ -106,6 +106,11 @@ pub(crate) fn mark_crossed(pool: &mut Pool, starts: &[NodeId], scratch: &mut Pru
     let mut flagged = core::mem::take(&mut scratch.flagged);
     flagged.clear();
     let done = scan(pool, scratch, CROSSED_BUDGET_PER_EDGE, |e, f| {
+        // edges meeting at a node share an endpoint, which no proper crossing does (the
+        // scans visit every pair of neighbours: spare them the predicates)
+        if e.to == f.from || f.to == e.from {
+            return false;
+        }
         let (a, b, c, d) = (pool.p(e.from), pool.p(e.to), pool.p(f.from), pool.p(f.to));
         if crate::clip::crosses(a, b, c, d) {
             flagged.push(e.from);

@@ -156,7 +156,8 @@ impl Context {
 
 /// The whole pipeline once; returns the numbers of polygons and holes. `None` when asked
 /// to `untwist` and there was no bow tie to untwist: the run would repeat the last one.
-/// Bridges are chosen carefully when `cx.careful_bridges` says so.
+/// Bridges are chosen carefully when `cx.careful_bridges` says so; that run starts from
+/// the first run's state before bridging, which [`prepare`] kept.
 fn run<T: Coord>(
     cx: &mut Context,
     vertices: &[[T; 2]],

@@ -75,8 +75,13 @@ fn eliminate_hole(cx: &mut Context, hole: usize) -> Result<(), Error> {
                 // inside out. The careful run bridges from a vertex of the hole that sees
                 // its target properly; the others keep the ray's choice (see `triangulate`).
                 cx.bridge_left = true;
-                let careful = cx.careful_bridges;
-                match bridge_from_elsewhere(cx, m, true).filter(|_| careful) {
+                // (only the careful run looks for that vertex: the search is costly)
+                let elsewhere = if cx.careful_bridges {
+                    bridge_from_elsewhere(cx, m, true)
+                } else {
+                    None
+                };
+                match elsewhere {
                     Some((other, x)) => {
                         m = other;
                         Target::Visible(x)
@@ -378,13 +383,14 @@ fn least_angle_in_triangle(
     let box_lo = Point::new(pm.x, ylo);
     let box_hi = Point::new(pa.x.max(pb.x), yhi);
     for r in cx.edge_grid.query(box_lo, box_hi) {
+        // the position first: most candidates fail there, without a look at their ring
         let node = cx.pool.get(r);
-        if node.removed || cx.rings[node.ring as usize].component != component {
-            continue;
-        }
         let q = node.p;
         let strictly_beside_ray = if above { q.y > pm.y } else { q.y < pm.y };
         if !strictly_beside_ray || q.y < ylo || q.y > yhi || q.x < pm.x || q == p {
+            continue;
+        }
+        if node.removed || cx.rings[node.ring as usize].component != component {
             continue;
         }
         if !left_of(pa, pb, q) || orient2d(pm, p, q) == outside_mp {

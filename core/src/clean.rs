@@ -30,7 +30,7 @@ pub(crate) fn clean(cx: &mut Context, untwist: bool) -> Result<bool, Error> {
     for r in 0..cx.rings.len() {
         filter_ring(cx, r);
     }
-    if untwist {
+    let apart = if untwist {
         // Loading and filtering are deterministic, so these are the first run's nodes and
         // `cx.crossings` still holds what its sweep found in them: report those crossings
         // as that sweep did, without sweeping again.
@@ -50,20 +50,25 @@ pub(crate) fn clean(cx: &mut Context, untwist: bool) -> Result<bool, Error> {
         // (relinking may have left collinear turns)
         if still_crossed {
             cx.sweep.order_is_sorted = true;
-            sweep(cx, None)?;
+            sweep(cx, None)?
         } else {
-            sweep(cx, Some(false))?;
+            sweep(cx, Some(false))?
         }
     } else {
         // the filter left no collinear turn
-        sweep(cx, Some(true))?;
-    }
-    canonical_vertices(cx);
+        sweep(cx, Some(true))?
+    };
     // nodes from here on are the ones edge splits add
-    let first_split = cx.pool.len();
-    cx.loaded_nodes = first_split;
-    split_touched_edges(cx);
-    collect_shared(cx, first_split);
+    cx.loaded_nodes = cx.pool.len();
+    if apart {
+        // no two nodes share a position and no vertex lies on an edge
+        cx.shared.clear();
+    } else {
+        canonical_vertices(cx);
+        let first_split = cx.loaded_nodes;
+        split_touched_edges(cx);
+        collect_shared(cx, first_split);
+    }
     for r in 0..cx.rings.len() {
         if cx.rings[r].alive {
             orient_ring(cx, r);
@@ -142,7 +147,8 @@ fn drop_node(cx: &mut Context, n: NodeId, ring: u32, reason: DropReason) {
 /// Sweeps every live edge: crossings are errors in strict mode, repairs in lenient mode.
 /// With `prune`, first tries to prove that no two edges meet, which gives the same result
 /// faster; `Some(true)` says that no turn is collinear (see [`prune::edges_apart`]).
-fn sweep(cx: &mut Context, prune: Option<bool>) -> Result<(), Error> {
+/// Returns whether that proof succeeded: then no two nodes share a position either.
+fn sweep(cx: &mut Context, prune: Option<bool>) -> Result<bool, Error> {
     cx.starts.clear();
     cx.starts
         .extend(cx.rings.iter().filter(|r| r.alive).map(|r| r.start));
@@ -154,7 +160,7 @@ fn sweep(cx: &mut Context, prune: Option<bool>) -> Result<(), Error> {
     if let Some(turns_proper) = prune {
         let order = &mut cx.sweep.order;
         if prune::edges_apart(&cx.pool, &cx.starts, &mut cx.prune, order, turns_proper) {
-            return Ok(());
+            return Ok(true);
         }
     }
     validate::sweep(
@@ -177,7 +183,7 @@ fn sweep(cx: &mut Context, prune: Option<bool>) -> Result<(), Error> {
         }
         report_crossings(cx);
     }
-    Ok(())
+    Ok(false)
 }
 
 /// Lenient mode: records a repair for each crossing in `cx.crossings`.

@@ -20,6 +20,10 @@ const MAX_CELLS: usize = 32;
 /// by the number of edges, also for long thin edges such as a comb's teeth.
 const MAX_THIN: usize = 4;
 
+/// Up to this many edges, [`EdgeGrid`] has one cell: looking at every edge costs less
+/// than placing them in cells.
+const ONE_CELL: usize = 32;
+
 /// End of a cell's entry list.
 const END: u32 = u32::MAX;
 
@@ -51,8 +55,13 @@ pub(crate) struct EdgeGrid {
 impl EdgeGrid {
     /// Empties the index and sizes it for `edges` edges within the box `lo..=hi`: about
     /// one cell per two edges, shaped like the box, so a cell holds a handful of edges.
+    /// Up to [`ONE_CELL`] edges, one cell holds them all.
     pub fn reset(&mut self, lo: Point, hi: Point, edges: usize) {
-        let cells = (edges / 2).clamp(1, 1 << 22);
+        let cells = if edges <= ONE_CELL {
+            1
+        } else {
+            (edges / 2).clamp(1, 1 << 22)
+        };
         let (w, h) = (hi.x - lo.x, hi.y - lo.y);
         let (nx, ny) = shape(cells, w, h);
         (self.x0, self.y0, self.nx, self.ny) = (lo.x, lo.y, nx, ny);
@@ -91,6 +100,11 @@ impl EdgeGrid {
     /// Lists the edge starting at `n`, running from `a` to `b`.
     pub fn insert(&mut self, n: NodeId, a: Point, b: Point) {
         if self.head.is_empty() {
+            return;
+        }
+        if self.nx == 1 && self.ny == 1 {
+            // every box touches the only cell
+            self.push(0, n);
             return;
         }
         let (c0, c1) = (self.column(a.x.min(b.x)), self.column(a.x.max(b.x)));
@@ -149,16 +163,101 @@ impl EdgeGrid {
     }
 
     /// Every listed edge whose bounding box may meet the box `lo..=hi` (and possibly
-    /// others, and possibly some twice).
-    pub fn query(&self, lo: Point, hi: Point) -> impl Iterator<Item = NodeId> + '_ {
+    /// others, and possibly some twice): those of the cells row by row, of the rows' lists,
+    /// of the columns' lists, then the long ones.
+    pub fn query(&self, lo: Point, hi: Point) -> Query<'_> {
         let (c0, c1) = (self.column(lo.x), self.column(hi.x));
         let (r0, r1) = (self.row(lo.y), self.row(hi.y));
         // an empty grid has one row and column of empty lists (see `list`)
-        let cells = (r0..=r1).flat_map(move |r| (c0..=c1).flat_map(move |c| self.cell(r, c)));
-        cells
-            .chain((r0..=r1).flat_map(move |r| self.row_list(r)))
-            .chain((c0..=c1).flat_map(move |c| self.column_list(c)))
-            .chain(self.long.iter().copied())
+        Query {
+            grid: self,
+            at: END,
+            stage: Stage::Cells,
+            r: r0,
+            c: c0,
+            r0,
+            r1,
+            c0,
+            c1,
+            long: self.long.iter(),
+        }
+    }
+}
+
+/// Which lists a [`Query`] walks now.
+#[derive(Clone, Copy)]
+enum Stage {
+    Cells,
+    Rows,
+    Columns,
+    Long,
+}
+
+/// The edges of [`EdgeGrid::query`]: one list after another, as one loop (nested
+/// iterator adaptors cost several times more per edge).
+pub(crate) struct Query<'a> {
+    grid: &'a EdgeGrid,
+    /// The next entry of the current list, or `END`.
+    at: u32,
+    stage: Stage,
+    /// The next cell, row or column whose list comes.
+    r: usize,
+    c: usize,
+    r0: usize,
+    r1: usize,
+    c0: usize,
+    c1: usize,
+    long: core::slice::Iter<'a, NodeId>,
+}
+
+impl Iterator for Query<'_> {
+    type Item = NodeId;
+
+    #[inline]
+    fn next(&mut self) -> Option<NodeId> {
+        let grid = self.grid;
+        // each round yields an entry or moves on to the next list; entries link to earlier
+        // ones only, so every list ends
+        loop {
+            if let Some(&(n, next)) = grid.entries.get(self.at as usize) {
+                self.at = next;
+                return Some(n);
+            }
+            let cells = grid.nx * grid.ny;
+            let list = match self.stage {
+                Stage::Cells => {
+                    let list = self.r * grid.nx + self.c;
+                    if self.c < self.c1 {
+                        self.c += 1;
+                    } else if self.r < self.r1 {
+                        (self.r, self.c) = (self.r + 1, self.c0);
+                    } else {
+                        (self.stage, self.r) = (Stage::Rows, self.r0);
+                    }
+                    list
+                }
+                Stage::Rows => {
+                    let list = cells + self.r;
+                    if self.r < self.r1 {
+                        self.r += 1;
+                    } else {
+                        (self.stage, self.c) = (Stage::Columns, self.c0);
+                    }
+                    list
+                }
+                Stage::Columns => {
+                    let list = cells + grid.ny + self.c;
+                    if self.c < self.c1 {
+                        self.c += 1;
+                    } else {
+                        self.stage = Stage::Long;
+                    }
+                    list
+                }
+                Stage::Long => return self.long.next().copied(),
+            };
+            self.at = grid.head.get(list).copied().unwrap_or(END);
+        }
     }
 }
 

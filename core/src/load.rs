@@ -93,27 +93,22 @@ fn load_ring<T: Coord>(
     let start = if input == 0 { 0 } else { start };
     let ring = cx.rings.len() as u32;
     let first = cx.pool.len() as u32;
-    for (i, v) in vertices.iter().enumerate().take(end).skip(start) {
-        // `+ 0.0` turns -0.0 into +0.0, so equal positions compare equal bit for bit too
-        let (x, y) = (v[0].to_f64() + 0.0, v[1].to_f64() + 0.0);
-        if !(x.is_finite() && y.is_finite()) {
-            if !cx.lenient {
-                return Err(Error::NonFinite { vertex: i });
-            }
-            cx.dropped.push(Dropped {
-                vertex: i as u32,
-                ring: input,
-                reason: DropReason::NonFinite,
-            });
-            continue;
-        }
-        cx.pool.push(Point::new(x, y), i as u32, ring);
-    }
-    let count = cx.pool.len() as u32 - first;
+    let run = vertices.get(start..end).unwrap_or_default();
+    let count = if run.iter().all(|v| {
+        let p = position(v);
+        p.x.is_finite() && p.y.is_finite()
+    }) {
+        // the usual case: every vertex is a node, in one go
+        let nodes = run.iter().enumerate();
+        cx.pool
+            .push_ring(nodes.map(|(k, v)| (position(v), (start + k) as u32)), ring)
+    } else {
+        load_finite(cx, run, start, input)?;
+        cx.pool.len() as u32 - first
+    };
     if count == 0 {
         return Ok(());
     }
-    cx.pool.link_run(first, count);
     cx.rings.push(Ring {
         input,
         start: NodeId(first),
@@ -125,4 +120,41 @@ fn load_ring<T: Coord>(
         component: ring,
     });
     Ok(())
+}
+
+/// Loads the finite vertices of `run`, the first of which is vertex `start`, as nodes of
+/// a new ring, linked in order: lenient mode drops the others, strict mode refuses them.
+fn load_finite<T: Coord>(
+    cx: &mut Context,
+    run: &[[T; 2]],
+    start: usize,
+    input: u32,
+) -> Result<(), Error> {
+    let ring = cx.rings.len() as u32;
+    let first = cx.pool.len() as u32;
+    for (k, v) in run.iter().enumerate() {
+        let i = start + k;
+        let p = position(v);
+        if !(p.x.is_finite() && p.y.is_finite()) {
+            if !cx.lenient {
+                return Err(Error::NonFinite { vertex: i });
+            }
+            cx.dropped.push(Dropped {
+                vertex: i as u32,
+                ring: input,
+                reason: DropReason::NonFinite,
+            });
+            continue;
+        }
+        cx.pool.push(p, i as u32, ring);
+    }
+    cx.pool.link_run(first, cx.pool.len() as u32 - first);
+    Ok(())
+}
+
+/// A vertex as a position. `+ 0.0` turns -0.0 into +0.0, so equal positions compare equal
+/// bit for bit too.
+#[inline]
+fn position<T: Coord>(v: &[T; 2]) -> Point {
+    Point::new(v[0].to_f64() + 0.0, v[1].to_f64() + 0.0)
 }

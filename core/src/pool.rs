@@ -41,6 +41,26 @@ pub(crate) struct Node {
     pub shared: bool,
 }
 
+impl Node {
+    /// A fresh node between `prev` and `next`, with every flag clear.
+    #[inline]
+    fn new(p: Point, vertex: u32, ring: u32, prev: NodeId, next: NodeId) -> Self {
+        Node {
+            p,
+            vertex,
+            ring,
+            prev,
+            next,
+            removed: false,
+            reflex: false,
+            crossed: false,
+            not_ear: false,
+            stamp: 0,
+            shared: false,
+        }
+    }
+}
+
 /// The pool: nodes plus list operations.
 #[derive(Debug, Default)]
 pub(crate) struct Pool {
@@ -85,20 +105,27 @@ impl Pool {
     /// Appends an unlinked node (its own ring of one) and returns its id.
     pub fn push(&mut self, p: Point, vertex: u32, ring: u32) -> NodeId {
         let id = NodeId(self.nodes.len() as u32);
-        self.nodes.push(Node {
-            p,
-            vertex,
-            ring,
-            prev: id,
-            next: id,
-            removed: false,
-            reflex: false,
-            crossed: false,
-            not_ear: false,
-            stamp: 0,
-            shared: false,
-        });
+        self.nodes.push(Node::new(p, vertex, ring, id, id));
         id
+    }
+
+    /// Appends one ring's nodes, given as positions with vertex indices, linked in order
+    /// into a circular list; returns how many. (One `extend` of known length: no capacity
+    /// check per node.)
+    pub fn push_ring(
+        &mut self,
+        points: impl ExactSizeIterator<Item = (Point, u32)>,
+        ring: u32,
+    ) -> u32 {
+        let first = self.nodes.len() as u32;
+        self.nodes
+            .extend((first..).zip(points).map(|(id, (p, vertex))| {
+                let (prev, next) = (id.wrapping_sub(1), id.wrapping_add(1));
+                Node::new(p, vertex, ring, NodeId(prev), NodeId(next))
+            }));
+        let count = self.nodes.len() as u32 - first;
+        self.close_run(first, count);
+        count
     }
 
     /// Links the nodes `first..first+count` (in pool order) into one circular list.
@@ -113,7 +140,15 @@ impl Pool {
             n.prev = NodeId(k.wrapping_sub(1));
             n.next = NodeId(k.wrapping_add(1));
         }
-        // close the circle
+        self.close_run(first, count);
+    }
+
+    /// Closes the run `first..first+count`, linked in pool order, into a circle.
+    fn close_run(&mut self, first: u32, count: u32) {
+        if count == 0 {
+            return;
+        }
+        let last = first + count - 1;
         self.nodes[first as usize].prev = NodeId(last);
         self.nodes[last as usize].next = NodeId(first);
     }

@@ -71,6 +71,9 @@ struct Chain {
 /// two, and takes the grid).
 const EDGES_PER_CHAIN: usize = 4;
 
+/// Up to this many edges, comparing every pair of boxes is cheaper than sorting them.
+const TINY: usize = 32;
+
 /// Up to this many edges, sorting the boxes is cheaper than a grid or chains.
 const SMALL: usize = 512;
 
@@ -103,6 +106,11 @@ pub(crate) fn mark_crossed(pool: &mut Pool, starts: &[NodeId], scratch: &mut Pru
     let mut flagged = core::mem::take(&mut scratch.flagged);
     flagged.clear();
     let done = scan(pool, scratch, CROSSED_BUDGET_PER_EDGE, |e, f| {
+        // edges meeting at a node share an endpoint, which no proper crossing does (the
+        // scans visit every pair of neighbours: spare them the predicates)
+        if e.to == f.from || f.to == e.from {
+            return false;
+        }
         let (a, b, c, d) = (pool.p(e.from), pool.p(e.to), pool.p(f.from), pool.p(f.to));
         if crate::clip::crosses(a, b, c, d) {
             flagged.push(e.from);
@@ -141,11 +149,15 @@ fn collect_boxes(
             if let Some(nodes) = nodes.as_deref_mut() {
                 nodes.push(n);
             }
+            // coordinates are finite (load dropped or refused the others): plain
+            // comparisons, without `f64::min`'s NaN handling
+            let (x0, x1) = if b.x < a.x { (b.x, a.x) } else { (a.x, b.x) };
+            let (y0, y1) = if b.y < a.y { (b.y, a.y) } else { (a.y, b.y) };
             boxes.push(EdgeBox {
-                x0: a.x.min(b.x),
-                x1: a.x.max(b.x),
-                y0: a.y.min(b.y),
-                y1: a.y.max(b.y),
+                x0,
+                x1,
+                y0,
+                y1,
                 from: n,
                 to: next,
             });
@@ -178,7 +190,10 @@ fn scan(
     visit: impl FnMut(&EdgeBox, &EdgeBox) -> bool,
 ) -> Scan {
     let budget = per_edge * scratch.boxes.len() + 64;
-    if scratch.boxes.len() <= SMALL {
+    let n = scratch.boxes.len();
+    if n <= TINY && n * n.saturating_sub(1) / 2 <= budget {
+        scan_pairs(&scratch.boxes, visit)
+    } else if n <= SMALL {
         sort_by_left(&mut scratch.boxes, &mut scratch.merged, &mut scratch.runs);
         scan_sorted(&scratch.boxes, budget, visit)
     } else if collect_chains(pool, &scratch.boxes, &mut scratch.chains) {
@@ -400,6 +415,18 @@ fn sort_by_left(boxes: &mut Vec<EdgeBox>, merged: &mut Vec<EdgeBox>, runs: &mut 
         boxes.clear();
         boxes.extend_from_slice(merged);
     }
+}
+
+/// A handful of edges: compare every pair's boxes, which costs less than sorting them.
+fn scan_pairs(boxes: &[EdgeBox], mut visit: impl FnMut(&EdgeBox, &EdgeBox) -> bool) -> Scan {
+    for (i, e) in boxes.iter().enumerate() {
+        for f in &boxes[i + 1..] {
+            if f.x0 <= e.x1 && e.x0 <= f.x1 && f.y0 <= e.y1 && e.y0 <= f.y1 && visit(e, f) {
+                return Scan::Stopped;
+            }
+        }
+    }
+    Scan::Done
 }
 
 /// A few edges, sorted by the left sides of their boxes: compare each with the boxes that

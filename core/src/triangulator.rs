@@ -106,14 +106,47 @@ pub(crate) struct Context {
     /// Lenient mode with crossings: the input's area (outer rings minus holes, by the
     /// shoelace formula as earcut measures it) and snapshots for a second clipping try.
     pub area: f64,
-    pub saved_nodes: Vec<crate::pool::Node>,
-    pub saved_rings: Vec<Ring>,
+    /// Lenient mode with crossings: the deviation of the last run's result from `area`.
+    pub deviation: f64,
+    /// The bridged rings, for the second clipping try.
+    pub before_clip: Snapshot,
     pub saved_repairs: Vec<Repair>,
+    /// The first run's state before bridging, for the careful run (see [`run`]).
+    pub before_bridge: Snapshot,
+    pub before_bridge_dropped: Vec<Dropped>,
+    pub before_bridge_repairs: Vec<Repair>,
+    pub before_bridge_crossings: Vec<validate::Crossing>,
+    pub before_bridge_holes: usize,
     pub first_dropped: Vec<Dropped>,
     pub first_repairs: Vec<Repair>,
     pub alt_out: Vec<[u32; 3]>,
     pub alt_untwisted: Vec<[u32; 3]>,
     pub clip: clip::ClipScratch,
+}
+
+/// A copy of the node pool and the ring table, to try again from the same point.
+#[derive(Debug, Default)]
+pub(crate) struct Snapshot {
+    nodes: Vec<crate::pool::Node>,
+    rings: Vec<Ring>,
+}
+
+impl Snapshot {
+    fn save(&mut self, pool: &Pool, rings: &[Ring]) {
+        copy_into(&mut self.nodes, &pool.nodes);
+        copy_into(&mut self.rings, rings);
+    }
+
+    fn restore(&self, pool: &mut Pool, rings: &mut Vec<Ring>) {
+        copy_into(&mut pool.nodes, &self.nodes);
+        copy_into(rings, &self.rings);
+    }
+}
+
+/// Makes `to` a copy of `from`, keeping `to`'s buffer.
+fn copy_into<T: Copy>(to: &mut Vec<T>, from: &[T]) {
+    to.clear();
+    to.extend_from_slice(from);
 }
 
 impl Context {
@@ -134,7 +167,8 @@ impl Context {
 
 /// The whole pipeline once; returns the numbers of polygons and holes. `None` when asked
 /// to `untwist` and there was no bow tie to untwist: the run would repeat the last one.
-/// Bridges are chosen carefully when `cx.careful_bridges` says so.
+/// Bridges are chosen carefully when `cx.careful_bridges` says so; that run starts from
+/// the first run's state before bridging, which [`prepare`] kept.
 fn run<T: Coord>(
     cx: &mut Context,
     vertices: &[[T; 2]],
@@ -145,19 +179,58 @@ fn run<T: Coord>(
 ) -> Result<Option<(usize, usize)>, Error> {
     out.clear();
     cx.reset(options.lenient);
+    let holes = if cx.careful_bridges {
+        // The careful run is the first run up to the bridges: start from its state there
+        // (load, clean, nest, touch and the crossing flags are deterministic).
+        cx.before_bridge.restore(&mut cx.pool, &mut cx.rings);
+        copy_into(&mut cx.dropped, &cx.before_bridge_dropped);
+        copy_into(&mut cx.repairs, &cx.before_bridge_repairs);
+        copy_into(&mut cx.crossings, &cx.before_bridge_crossings);
+        cx.before_bridge_holes
+    } else {
+        match prepare(cx, vertices, ring_starts, options.nesting, untwist)? {
+            Some(holes) => holes,
+            None => return Ok(None),
+        }
+    };
+    bridge::bridge(cx)?;
+    let polygons = if cx.lenient && !cx.crossings.is_empty() {
+        clip_best_effort(cx, vertices, options.strategy, out)?
+    } else {
+        let polygons = clip::clip(cx, options.strategy, false, out)?;
+        if untwist {
+            // untwisting uncrossed every crossing edge: one clip, measured all the same
+            cx.deviation = deviation(cx.area, vertices, out);
+        }
+        polygons
+    };
+    Ok(Some((polygons, holes)))
+}
+
+/// The pipeline up to bridging: load, clean, nest, join touching rings and, on crossing
+/// lenient input, flag the crossed edges. Returns the number of holes; `None` as [`run`].
+/// The first run on crossing input with holes keeps its state for the careful run.
+fn prepare<T: Coord>(
+    cx: &mut Context,
+    vertices: &[[T; 2]],
+    ring_starts: &[usize],
+    nesting: crate::Nesting,
+    untwist: bool,
+) -> Result<Option<usize>, Error> {
     load::load(cx, vertices, ring_starts)?;
     if !clean::clean(cx, untwist)? {
         return Ok(None);
     }
-    nest::nest(cx, options.nesting)?;
+    nest::nest(cx, nesting)?;
+    let crossing = cx.lenient && !cx.crossings.is_empty();
     // Every run is measured against the input's area, as earcut measures: untwisting
     // relinks the rings and changes their shoelace sum, so that run keeps the area of
     // the run before it (always one without untwisting).
-    if cx.lenient && !cx.crossings.is_empty() && !untwist {
+    if crossing && !untwist {
         cx.area = signed_area(cx);
     }
     let holes = touch::join(cx);
-    if cx.lenient && !cx.crossings.is_empty() {
+    if crossing {
         cx.starts.clear();
         cx.starts
             .extend(cx.rings.iter().filter(|r| r.alive).map(|r| r.start));
@@ -169,40 +242,41 @@ fn run<T: Coord>(
             validate::mark_crossed(&mut cx.pool, &cx.edge_grid, &cx.starts, &mut cx.edges);
         }
     }
-    bridge::bridge(cx)?;
-    let polygons = if cx.lenient && !cx.crossings.is_empty() {
-        clip_best_effort(cx, vertices, options.strategy, out)?
-    } else {
-        clip::clip(cx, options.strategy, false, out)?
-    };
-    Ok(Some((polygons, holes)))
+    // only a bridge can leave the polygon, which is what a careful run may follow
+    let has_holes = || cx.rings.iter().any(|r| r.alive && r.depth % 2 == 1);
+    if crossing && !untwist && has_holes() {
+        cx.before_bridge.save(&cx.pool, &cx.rings);
+        copy_into(&mut cx.before_bridge_dropped, &cx.dropped);
+        copy_into(&mut cx.before_bridge_repairs, &cx.repairs);
+        copy_into(&mut cx.before_bridge_crossings, &cx.crossings);
+        cx.before_bridge_holes = holes;
+    }
+    Ok(Some(holes))
 }
 
 /// Lenient mode, input with crossing edges: no triangulation covers it exactly, so clip
 /// twice from the same bridged rings — with ears at crossed edges deferred and without —
-/// and keep the result whose area is closer to the input's (earcut's deviation measure).
+/// and keep the result whose area is closer to the input's (earcut's deviation measure),
+/// recorded in `cx.deviation`. A first result covering the area exactly cannot be beaten,
+/// so then the second clip is skipped.
 fn clip_best_effort<T: Coord>(
     cx: &mut Context,
     vertices: &[[T; 2]],
     strategy: crate::Strategy,
     out: &mut Vec<[u32; 3]>,
 ) -> Result<usize, Error> {
-    cx.saved_nodes.clear();
-    cx.saved_nodes.extend_from_slice(&cx.pool.nodes);
-    cx.saved_rings.clear();
-    cx.saved_rings.extend_from_slice(&cx.rings);
+    cx.before_clip.save(&cx.pool, &cx.rings);
     let repairs_before = cx.repairs.len();
     let polygons = clip::clip(cx, strategy, false, out)?;
     let plain = deviation(cx.area, vertices, out);
+    cx.deviation = plain;
+    if plain == 0.0 {
+        return Ok(polygons);
+    }
     // keep the first try's repairs aside, restore the rings, try again
-    cx.saved_repairs.clear();
-    cx.saved_repairs
-        .extend_from_slice(&cx.repairs[repairs_before..]);
+    copy_into(&mut cx.saved_repairs, &cx.repairs[repairs_before..]);
     cx.repairs.truncate(repairs_before);
-    cx.pool.nodes.clear();
-    cx.pool.nodes.extend_from_slice(&cx.saved_nodes);
-    cx.rings.clear();
-    cx.rings.extend_from_slice(&cx.saved_rings);
+    cx.before_clip.restore(&mut cx.pool, &mut cx.rings);
     let mut alt = core::mem::take(&mut cx.alt_out);
     alt.clear();
     let result = clip::clip(cx, strategy, true, &mut alt);
@@ -213,8 +287,8 @@ fn clip_best_effort<T: Coord>(
     };
     if deferred < plain {
         // copy, not swap: the caller's buffer keeps its capacity
-        out.clear();
-        out.extend_from_slice(&alt);
+        copy_into(out, &alt);
+        cx.deviation = deferred;
     } else {
         cx.repairs.truncate(repairs_before);
         cx.repairs.extend_from_slice(&cx.saved_repairs);
@@ -366,45 +440,38 @@ impl<T: Coord> Triangulator<T> {
         if cx.lenient && !cx.crossings.is_empty() {
             // Crossing edges have no exact triangulation: try again with bow ties
             // uncrossed, and where a bridge left the polygon, with bridges chosen
-            // carefully; keep whichever covers the input's area most closely.
-            let mut best = deviation(cx.area, vertices, out);
-            let mut bridge_left = cx.bridge_left;
-            cx.first_dropped.clear();
-            cx.first_dropped.extend_from_slice(&cx.dropped);
-            cx.first_repairs.clear();
-            cx.first_repairs.extend_from_slice(&cx.repairs);
+            // carefully; keep whichever covers the input's area most closely. A run
+            // covering it exactly cannot be beaten: then the others are skipped.
+            let mut best = cx.deviation;
+            // Bridges are chosen carefully only where one leaves the polygon, so without
+            // that in this run (bow ties as given) the careful run would repeat it.
+            let careful_may_help = cx.bridge_left;
+            copy_into(&mut cx.first_dropped, &cx.dropped);
+            copy_into(&mut cx.first_repairs, &cx.repairs);
             let mut alt = core::mem::take(&mut cx.alt_untwisted);
             for untwist in [true, false] {
-                if !untwist {
-                    if !bridge_left {
-                        break;
-                    }
-                    // Careful bridges, bow ties as given: which of the two kinds of run
-                    // goes better with them varies, and one more run is enough here.
-                    cx.careful_bridges = true;
+                if best == 0.0 || (!untwist && !careful_may_help) {
+                    break;
                 }
+                // Careful bridges, bow ties as given: which of the two kinds of run goes
+                // better with them varies, and one more run is enough here.
+                cx.careful_bridges = !untwist;
                 let next = run(cx, vertices, ring_starts, options, untwist, &mut alt);
-                bridge_left |= cx.bridge_left;
                 cx.careful_bridges = false;
                 match next {
-                    Ok(Some(counts)) if deviation(cx.area, vertices, &alt) < best => {
-                        best = deviation(cx.area, vertices, &alt);
+                    Ok(Some(counts)) if cx.deviation < best => {
+                        best = cx.deviation;
                         (polygons, holes) = counts;
                         // copy, not swap: the caller's buffer keeps its capacity
-                        out.clear();
-                        out.extend_from_slice(&alt);
-                        cx.first_dropped.clear();
-                        cx.first_dropped.extend_from_slice(&cx.dropped);
-                        cx.first_repairs.clear();
-                        cx.first_repairs.extend_from_slice(&cx.repairs);
+                        copy_into(out, &alt);
+                        copy_into(&mut cx.first_dropped, &cx.dropped);
+                        copy_into(&mut cx.first_repairs, &cx.repairs);
                     }
                     _ => {}
                 }
             }
-            cx.dropped.clear();
-            cx.dropped.extend_from_slice(&cx.first_dropped);
-            cx.repairs.clear();
-            cx.repairs.extend_from_slice(&cx.first_repairs);
+            copy_into(&mut cx.dropped, &cx.first_dropped);
+            copy_into(&mut cx.repairs, &cx.first_repairs);
             cx.alt_untwisted = alt;
         }
         Ok(Report {

@@ -15,7 +15,7 @@
 //!    and make every ring counter-clockwise. No winding order is assumed from the caller.
 
 use crate::pool::NodeId;
-use crate::predicates::{cmp_xy, orient2d, within_box, Orientation, Point};
+use crate::predicates::{cmp_xy, on_segment, orient2d, within_box, Orientation, Point};
 use crate::prune;
 use crate::report::{DropReason, Dropped, RepairKind};
 use crate::triangulator::Context;
@@ -27,45 +27,43 @@ use crate::Error;
 /// Returns false when untwisting changed nothing: that run would repeat the first exactly,
 /// so the stage stops there.
 pub(crate) fn clean(cx: &mut Context, untwist: bool) -> Result<bool, Error> {
+    // every ring as loaded: its first node and node count
+    cx.blocks.clear();
+    let blocks = cx.rings.iter().map(|r| (r.start.0, r.len));
+    cx.blocks.extend(blocks);
+    let dropped_before = cx.dropped.len();
     for r in 0..cx.rings.len() {
         filter_ring(cx, r);
     }
-    let apart = if untwist {
-        // Loading and filtering are deterministic, so these are the first run's nodes and
-        // `cx.crossings` still holds what its sweep found in them: report those crossings
-        // as that sweep did, without sweeping again.
-        report_crossings(cx);
-        if !untwist_bow_ties(cx) {
-            return Ok(false);
+    let apart = match sweep_filtered(cx, untwist)? {
+        Some(apart) => apart,
+        None if untwist => return Ok(false),
+        None => {
+            // Two edges cross where one of them had a vertex the filter dropped: at that
+            // vertex the input only touched. Filter again, keeping straight vertices
+            // (for this run and the following ones of this call), and sweep again.
+            cx.keep_collinear = true;
+            cx.dropped.truncate(dropped_before);
+            for r in 0..cx.rings.len() {
+                let (first, count) = cx.blocks[r];
+                for n in &mut cx.pool.nodes[first as usize..(first + count) as usize] {
+                    n.removed = false;
+                }
+                cx.pool.link_run(first, count);
+                let ring = &mut cx.rings[r];
+                (ring.start, ring.len, ring.alive) = (NodeId(first), count, true);
+                filter_ring(cx, r);
+            }
+            sweep_filtered(cx, untwist)?.unwrap_or(false)
         }
-        // Untwisting relinks nodes but keeps them and their positions, so the first run's
-        // sweep order holds. A crossing it found that untwisting left alone means no proof
-        // of edges apart can succeed; without trying one, that order is still in place.
-        let pool = &cx.pool;
-        let crossed = |a: NodeId| (pool.p(a), pool.p(pool.next(a)));
-        let still_crossed = cx.crossings.iter().any(|c| {
-            let ((a, b), (p, q)) = (crossed(c.a), crossed(c.b));
-            crate::clip::crosses(a, b, p, q)
-        });
-        // (relinking may have left collinear turns)
-        if still_crossed {
-            cx.sweep.order_is_sorted = true;
-            sweep(cx, None)?
-        } else {
-            sweep(cx, Some(false))?
-        }
-    } else {
-        // the filter left no collinear turn
-        sweep(cx, Some(true))?
     };
-    // nodes from here on are the ones edge splits add
-    cx.loaded_nodes = cx.pool.len();
     if apart {
         // no two nodes share a position and no vertex lies on an edge
         cx.shared.clear();
     } else {
         canonical_vertices(cx);
-        let first_split = cx.loaded_nodes;
+        // nodes from here on are the ones edge splits add
+        let first_split = cx.pool.len();
         split_touched_edges(cx);
         collect_shared(cx, first_split);
     }
@@ -99,7 +97,7 @@ fn filter_ring(cx: &mut Context, r: usize) {
         } else if orient2d(pp, pn, px) != Orientation::Collinear {
             None
         } else if within_box(pp, px, pn) {
-            Some(DropReason::Collinear)
+            (!cx.keep_collinear).then_some(DropReason::Collinear)
         } else {
             Some(DropReason::Spike)
         };
@@ -144,11 +142,70 @@ fn drop_node(cx: &mut Context, n: NodeId, ring: u32, reason: DropReason) {
     });
 }
 
+/// The sweep after filtering (see [`sweep`]); with `untwist`, bow ties are uncrossed first
+/// (`Ok(None)` when there were none: the caller stops).
+fn sweep_filtered(cx: &mut Context, untwist: bool) -> Result<Option<bool>, Error> {
+    if untwist {
+        // Loading and filtering are deterministic, so these are the first run's nodes and
+        // `cx.crossings` still holds what its sweep found in them: report those crossings
+        // as that sweep did, without sweeping again.
+        report_crossings(cx);
+        if !untwist_bow_ties(cx) {
+            return Ok(None);
+        }
+        // Untwisting relinks nodes but keeps them and their positions, so the first run's
+        // sweep order holds. A crossing it found that untwisting left alone means no proof
+        // of edges apart can succeed; without trying one, that order is still in place.
+        let pool = &cx.pool;
+        let crossed = |a: NodeId| (pool.p(a), pool.p(pool.next(a)));
+        let still_crossed = cx.crossings.iter().any(|c| {
+            let ((a, b), (p, q)) = (crossed(c.a), crossed(c.b));
+            crate::clip::crosses(a, b, p, q)
+        });
+        // (relinking may have left collinear turns)
+        if still_crossed {
+            cx.sweep.order_is_sorted = true;
+            sweep(cx, None, false)
+        } else {
+            sweep(cx, Some(false), false)
+        }
+    } else {
+        // the filter left no collinear turn, unless told to keep them
+        sweep(cx, Some(!cx.keep_collinear), true)
+    }
+}
+
+/// Whether two edges the sweep found crossing (`cx.crossings`) cross where one of them ran
+/// through a vertex the filter dropped (a straight one, say): the input only touched
+/// there.
+fn crossing_at_dropped_vertex(cx: &Context) -> bool {
+    let pool = &cx.pool;
+    let edge = |e: NodeId| (pool.p(e), pool.p(pool.next(e)));
+    // the nodes dropped between e and its successor, in input order
+    let gap = |e: NodeId| {
+        let (first, count) = cx.blocks[pool.get(e).ring as usize];
+        let (s, t) = (e.0 - first, pool.next(e).0 - first);
+        let len = if t > s { t - s - 1 } else { count - s + t - 1 };
+        (1..=len).map(move |k| NodeId(first + (s + k) % count))
+    };
+    cx.crossings.iter().any(|c| {
+        [(c.a, c.b), (c.b, c.a)].into_iter().any(|(e, f)| {
+            let ((e0, e1), (f0, f1)) = (edge(e), edge(f));
+            gap(e).any(|d| {
+                let p = pool.p(d);
+                on_segment(e0, e1, p) && on_segment(f0, f1, p)
+            })
+        })
+    })
+}
+
 /// Sweeps every live edge: crossings are errors in strict mode, repairs in lenient mode.
 /// With `prune`, first tries to prove that no two edges meet, which gives the same result
 /// faster; `Some(true)` says that no turn is collinear (see [`prune::edges_apart`]).
-/// Returns whether that proof succeeded: then no two nodes share a position either.
-fn sweep(cx: &mut Context, prune: Option<bool>) -> Result<bool, Error> {
+/// Returns whether that proof succeeded: then no two nodes share a position either. With
+/// `may_retry`, `None` when two edges cross at a vertex the filter dropped (see
+/// [`crossing_at_dropped_vertex`]) and straight vertices were not kept yet.
+fn sweep(cx: &mut Context, prune: Option<bool>, may_retry: bool) -> Result<Option<bool>, Error> {
     cx.starts.clear();
     cx.starts
         .extend(cx.rings.iter().filter(|r| r.alive).map(|r| r.start));
@@ -160,7 +217,7 @@ fn sweep(cx: &mut Context, prune: Option<bool>) -> Result<bool, Error> {
     if let Some(turns_proper) = prune {
         let order = &mut cx.sweep.order;
         if prune::edges_apart(&cx.pool, &cx.starts, &mut cx.prune, order, turns_proper) {
-            return Ok(true);
+            return Ok(Some(true));
         }
     }
     validate::sweep(
@@ -172,6 +229,9 @@ fn sweep(cx: &mut Context, prune: Option<bool>) -> Result<bool, Error> {
         &mut cx.crossings,
     );
     if let Some(&Crossing { a, b }) = cx.crossings.first() {
+        if may_retry && !cx.keep_collinear && crossing_at_dropped_vertex(cx) {
+            return Ok(None);
+        }
         if !cx.lenient {
             let (na, nb) = (cx.pool.get(a), cx.pool.get(b));
             return Err(Error::EdgesCross {
@@ -183,7 +243,7 @@ fn sweep(cx: &mut Context, prune: Option<bool>) -> Result<bool, Error> {
         }
         report_crossings(cx);
     }
-    Ok(false)
+    Ok(Some(false))
 }
 
 /// Lenient mode: records a repair for each crossing in `cx.crossings`.

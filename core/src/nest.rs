@@ -42,7 +42,61 @@ pub(crate) fn nest(cx: &mut Context, nesting: Nesting) -> Result<(), Error> {
             cx.pool.reverse(ring.start);
         }
     }
-    Ok(())
+    if cx.lenient {
+        Ok(())
+    } else {
+        check_shared_positions(cx)
+    }
+}
+
+/// Strict mode: around every position several nodes share, the polygon's winding number
+/// (outer rings counter-clockwise, holes clockwise by now) may take only two consecutive
+/// values in the sectors between the edges there. Rings that cross each other at a shared
+/// vertex (an X of two rings, or of one ring's two visits) give three; the sweep sees no
+/// crossing there, since neither edge passes through the other's interior.
+fn check_shared_positions(cx: &mut Context) -> Result<(), Error> {
+    let mut rays = core::mem::take(&mut cx.touch_nets);
+    let mut result = Ok(());
+    let mut i = 0;
+    while i < cx.shared.len() {
+        let o = cx.pool.p(cx.shared[i]);
+        let j = crate::touch::same_position_end(cx, i);
+        // each edge at o, as the direction away from o: +1 leaving, −1 arriving
+        rays.clear();
+        for &n in &cx.shared[i..j] {
+            let node = cx.pool.get(n);
+            if node.removed || !cx.rings[node.ring as usize].alive {
+                continue;
+            }
+            rays.push((cx.pool.p(node.next), 1));
+            rays.push((cx.pool.p(node.prev), -1));
+        }
+        rays.sort_unstable_by(|a, b| cmp_around(o, a.0, b.0));
+        // the winding number of each sector relative to the one before the first ray;
+        // rays along one direction bound no sector between them
+        let (mut w, mut lo, mut hi) = (0i64, 0i64, 0i64);
+        for (k, &(d, step)) in rays.iter().enumerate() {
+            w += i64::from(step);
+            let sector_ends =
+                !matches!(rays.get(k + 1), Some(&(e, _)) if cmp_around(o, d, e).is_eq());
+            if sector_ends {
+                (lo, hi) = (lo.min(w), hi.max(w));
+            }
+        }
+        if hi - lo > 1 {
+            let (a, b) = (cx.pool.get(cx.shared[i]), cx.pool.get(cx.shared[j - 1]));
+            result = Err(Error::EdgesCross {
+                ring_a: cx.rings[a.ring as usize].input as usize,
+                edge_a: a.vertex as usize,
+                ring_b: cx.rings[b.ring as usize].input as usize,
+                edge_b: b.vertex as usize,
+            });
+            break;
+        }
+        i = j;
+    }
+    cx.touch_nets = rays;
+    result
 }
 
 /// earcut's convention; in strict mode, checked against the computed depths.
@@ -265,15 +319,11 @@ fn depth_by_dropped(cx: &mut Context, b: usize) -> u32 {
     depth + cx.order.len() as u32
 }
 
-/// The pool indices of the nodes loaded for ring `r`, in input order: they lie together,
-/// around its rightmost node (a loaded node, never a split one).
+/// The pool indices of the nodes loaded for ring `r`, in input order.
 fn loaded(cx: &Context, r: usize) -> core::ops::RangeInclusive<usize> {
-    let nodes = &cx.pool.nodes[..cx.loaded_nodes.min(cx.pool.nodes.len())];
-    let at = cx.rings[r].rightmost.idx();
-    let of_r = |i: &usize| nodes.get(*i).is_some_and(|n| n.ring as usize == r);
-    let lo = (0..=at).rev().take_while(of_r).last().unwrap_or(at);
-    let hi = (at..nodes.len()).take_while(of_r).last().unwrap_or(at);
-    lo..=hi
+    let (first, count) = cx.blocks.get(r).copied().unwrap_or((0, 0));
+    let first = first as usize;
+    first..=(first + count as usize).saturating_sub(1).max(first)
 }
 
 /// The live rings other than `b` with an edge through `p`, into `out`.

@@ -23,16 +23,22 @@ use core::cmp::Ordering;
 use crate::predicates::{approx_cross, cmp_around, cmp_xy, orient2d, Orientation, Point};
 use crate::triangulator::{Context, Ring};
 
+/// The end of the run of `cx.shared` from `i` on whose nodes share one position.
+pub(crate) fn same_position_end(cx: &Context, i: usize) -> usize {
+    let p = cx.pool.p(cx.shared[i]);
+    let mut j = i + 1;
+    while j < cx.shared.len() && cx.pool.p(cx.shared[j]) == p {
+        j += 1;
+    }
+    j
+}
+
 /// Re-links every shared position and re-traces the rings; returns the number of holes.
 pub(crate) fn join(cx: &mut Context) -> usize {
     if !cx.shared.is_empty() {
         let mut i = 0;
         while i < cx.shared.len() {
-            let p = cx.pool.p(cx.shared[i]);
-            let mut j = i + 1;
-            while j < cx.shared.len() && cx.pool.p(cx.shared[j]) == p {
-                j += 1;
-            }
+            let j = same_position_end(cx, i);
             relink(cx, i, j);
             i = j;
         }

@@ -85,9 +85,12 @@ pub(crate) struct Context {
     pub probe_rings: Vec<u32>,
     /// Scratch of `nest`: (b, q) where ring b lies on ring q's boundary, inside it.
     pub overlaps: Vec<(u32, u32)>,
-    /// The nodes loaded from the input (in input order, ring after ring) are the first
-    /// `loaded_nodes` of the pool; edge splits add the rest.
-    pub loaded_nodes: usize,
+    /// Per ring as loaded: its first node and node count (its nodes lie together, in
+    /// input order).
+    pub blocks: Vec<(u32, u32)>,
+    /// Clean keeps straight vertices: the first try dropped one where edges then crossed.
+    /// Set for the rest of the call.
+    pub keep_collinear: bool,
     /// Scratch of `nest`: edges that cleaning dropped, with their rings.
     pub dropped_edges: Vec<(u32, crate::predicates::Point, crate::predicates::Point)>,
     /// Scratch: edges by start node (lenient crossing flags).
@@ -404,6 +407,7 @@ impl<T: Coord> Triangulator<T> {
     ) -> Result<(), Error> {
         let cx = &mut self.cx;
         cx.careful_bridges = false;
+        cx.keep_collinear = false;
         cx.reset(false);
         load::load(cx, vertices, ring_starts)?;
         clean::clean(cx, false)?;
@@ -434,6 +438,7 @@ impl<T: Coord> Triangulator<T> {
     ) -> Result<Report<'_>, Error> {
         let cx = &mut self.cx;
         cx.careful_bridges = false;
+        cx.keep_collinear = false;
         // without `untwist` the pipeline always runs to the end
         let (mut polygons, mut holes) = run(cx, vertices, ring_starts, options, false, out)?
             .ok_or(Error::Internal { stage: "clean" })?;

@@ -44,7 +44,9 @@ pub enum Error {
         count: usize,
     },
     /// Two edges cross (strict mode only). Each edge is named by the input vertex it starts
-    /// at and its ring; the edge runs to the next kept vertex of that ring.
+    /// at and its ring; the edge runs to the next kept vertex of that ring. Rings crossing
+    /// each other at a vertex they share (an X there) are named by two of their nodes at
+    /// that vertex.
     EdgesCross {
         /// Ring of the first edge.
         ring_a: usize,

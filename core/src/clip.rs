@@ -529,7 +529,7 @@ impl<'a> Clipper<'a> {
             let cells = &self.cx.clip.cells;
             // the grid's own entries are live reflex nodes (it forgets the others), so
             // only nodes added after building need looking up
-            cells.any_in_box(lo, hi, |r, q| {
+            cells.any_in_triangle([a, b, c], lo, hi, |r, q| {
                 debug_assert!(!pool.get(r).removed && pool.get(r).reflex);
                 test(r, q)
             }) || cells.extra().iter().any(|&r| {

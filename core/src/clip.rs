@@ -27,6 +27,7 @@ use crate::nest::corner_contains;
 use crate::pool::NodeId;
 use crate::predicates::{approx_angle_rank, left_of, orient2d, within_box, Orientation, Point};
 use crate::report::RepairKind;
+use crate::tips::Tips;
 use crate::triangulator::Context;
 use crate::{Error, Strategy};
 
@@ -40,6 +41,14 @@ const PLANTED_BUG: bool = cfg!(feature = "planted-bug");
 /// building the grid pays (earcut's threshold is 80 vertices in all).
 const GRID_MIN_REFLEX: usize = 32;
 
+/// The fast walk steps over marked tips one by one until it has taken this many steps per
+/// node of the ring (plus `WALK_STEPS_MIN`); then it keeps the tips in `ClipScratch::tips`
+/// and jumps over marked ones, to the same tip. Most rings never get there, and the
+/// bookkeeping would cost them more than it saves; a ring whose ears all lie behind the
+/// walk (a comb's spine, fanned from a corner: a lap per cut) gets there after a few laps.
+const WALK_STEPS_PER_NODE: usize = 16;
+const WALK_STEPS_MIN: usize = 256;
+
 /// Reusable buffers of the clip stage.
 #[derive(Debug, Default)]
 pub(crate) struct ClipScratch {
@@ -48,6 +57,8 @@ pub(crate) struct ClipScratch {
     reflex: Vec<(NodeId, Point)>,
     /// The same nodes by grid cell, when there are many (see `GRID_MIN_REFLEX`).
     cells: Cells,
+    /// Fast strategy: the ring's nodes by position, and the tips not marked "not an ear".
+    tips: Tips,
     /// Quality strategy: candidate ears by angle at the tip, with the node's stamp and the
     /// clipper's epoch when queued.
     heap: EarQueue,
@@ -141,6 +152,9 @@ struct Clipper<'a> {
     /// Bumped whenever an ear test may change for a tip none of whose neighbours changed
     /// (see [`Clipper::still_ear`]).
     epoch: u32,
+    /// The fast walk jumps: `cx.clip.tips` holds the ring, and every tip whose mark is
+    /// cleared must go in (marked ones drop out when the walk comes across them).
+    walking: bool,
 }
 
 /// Edge tests the lenient split search may spend per `clip` call (see
@@ -220,6 +234,7 @@ impl<'a> Clipper<'a> {
                 indexed,
                 avoid_crossed,
                 epoch: 0,
+                walking: false,
             },
             start,
         )
@@ -232,6 +247,9 @@ impl<'a> Clipper<'a> {
         let mut ear = self.live(start);
         let mut stop = ear;
         let mut rescanned = false;
+        // marked tips the walk may step over one by one before it starts `cx.clip.tips`
+        let steps_allowed = WALK_STEPS_PER_NODE * self.len + WALK_STEPS_MIN;
+        let mut steps = 0;
         while self.len > 3 {
             if self.reflex_count <= 1 && !self.no_fan && self.try_fan(ear) {
                 return Ok(());
@@ -257,9 +275,19 @@ impl<'a> Clipper<'a> {
             }
             // On to the next tip not marked "not an ear": until a cut, nothing the loop
             // looks at changes, so marked tips need no more than a step.
-            ear = self.cx.pool.next(ear);
-            while ear != stop && self.cx.pool.get(ear).not_ear {
-                ear = self.cx.pool.next(ear);
+            if self.walking {
+                ear = self.step(ear, stop);
+            } else {
+                let pool = &self.cx.pool;
+                ear = pool.next(ear);
+                while ear != stop && pool.get(ear).not_ear {
+                    ear = pool.next(ear);
+                    // at most `len` a step, and the count stops once it is over
+                    steps += 1;
+                }
+                if steps > steps_allowed {
+                    self.start_walk(ear);
+                }
             }
             if ear == stop {
                 if !rescanned && self.may_rescan() {
@@ -293,6 +321,71 @@ impl<'a> Clipper<'a> {
             self.cx.pool.get_mut(n).not_ear = false;
             n = self.cx.pool.next(n);
         }
+        if self.walking {
+            let (pool, tips) = (&self.cx.pool, &mut self.cx.clip.tips);
+            tips.fill(|n| !pool.get(n).removed);
+        }
+    }
+
+    /// Hands out ring positions from `start` (live) on, for [`Clipper::step`]; from now on
+    /// the walk jumps. Out of line, as rare.
+    #[cold]
+    #[inline(never)]
+    fn start_walk(&mut self, start: NodeId) {
+        let (pool, tips) = (&self.cx.pool, &mut self.cx.clip.tips);
+        tips.clear(pool.len());
+        let mut n = start;
+        for _ in 0..self.len {
+            tips.push(n);
+            n = pool.next(n);
+        }
+        tips.fill(|n| !pool.get(n).not_ear);
+        self.walking = true;
+    }
+
+    /// The walk's next tip after `ear`: the first live node after it not marked "not an
+    /// ear", or `stop` (live) if that comes first.
+    ///
+    /// `cx.clip.tips` holds every such node, and maybe some that were marked or removed
+    /// since they went in: those are dropped here, when the walk comes across them.
+    #[inline(never)]
+    fn step(&mut self, ear: NodeId, stop: NodeId) -> NodeId {
+        let (pool, tips) = (&self.cx.pool, &mut self.cx.clip.tips);
+        let (Some(e), Some(s)) = (tips.position(ear), tips.position(stop)) else {
+            return stop;
+        };
+        // steps from `e` to position `p` along the ring, 1 to len (a whole lap to itself)
+        let len = tips.len();
+        let steps = |p: usize| if p > e { p - e } else { p + len - e };
+        let mut tip = stop;
+        // each round drops a member, so this ends
+        while let Some(m) = tips.next_after(e) {
+            if steps(m) >= steps(s) {
+                break;
+            }
+            let node = pool.get(tips.node(m));
+            if !node.removed && !node.not_ear {
+                tip = tips.node(m);
+                break;
+            }
+            tips.remove(tips.node(m));
+        }
+        debug_assert_eq!(
+            tip,
+            self.step_by_step(ear, stop),
+            "the walk jumped elsewhere"
+        );
+        tip
+    }
+
+    /// [`Clipper::step`] the slow way, to check it.
+    fn step_by_step(&self, mut ear: NodeId, stop: NodeId) -> NodeId {
+        let pool = &self.cx.pool;
+        ear = pool.next(ear);
+        while ear != stop && pool.get(ear).not_ear {
+            ear = pool.next(ear);
+        }
+        ear
     }
 
     /// Mei et al.: always the ear with the smallest angle at its tip.
@@ -436,7 +529,7 @@ impl<'a> Clipper<'a> {
             let cells = &self.cx.clip.cells;
             // the grid's own entries are live reflex nodes (it forgets the others), so
             // only nodes added after building need looking up
-            cells.any_in_box(lo, hi, |r, q| {
+            cells.any_in_triangle([a, b, c], lo, hi, |r, q| {
                 debug_assert!(!pool.get(r).removed && pool.get(r).reflex);
                 test(r, q)
             }) || cells.extra().iter().any(|&r| {
@@ -513,6 +606,21 @@ impl<'a> Clipper<'a> {
         }
         self.cx.pool.remove(n);
         self.len -= 1;
+        if self.walking {
+            self.unlink_tip(n);
+        }
+    }
+
+    /// `cx.clip.tips` after unlinking `n`, which cleared its neighbours' marks. Out of
+    /// line: most rings never start the walk's bookkeeping, and `unlink` is hot.
+    #[cold]
+    #[inline(never)]
+    fn unlink_tip(&mut self, n: NodeId) {
+        let pool = &self.cx.pool;
+        let (prev, next) = (pool.prev(n), pool.next(n));
+        let tips = &mut self.cx.clip.tips;
+        tips.insert(prev);
+        tips.insert(next);
     }
 
     /// After a neighbour was cut: drop `n` if it repeats its successor's position or is the
@@ -1011,13 +1119,7 @@ mod tests {
 
     #[test]
     fn ear_queue_pops_like_a_binary_heap() {
-        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
-        let mut random = move |n: u64| {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state % n
-        };
+        let mut random = crate::testing::random(0x9e37_79b9_7f4a_7c15);
         let (mut queue, mut heap) = (EarQueue::default(), BinaryHeap::new());
         for _ in 0..20_000 {
             if random(3) < 2 {

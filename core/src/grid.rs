@@ -6,7 +6,8 @@
 //!   cells of one row from its origin outwards and stops at the first column past its
 //!   nearest hit, so it costs about the cells it passes, not the row.
 //! - [`Cells`]: a uniform grid of the reflex vertices of the polygon being clipped, so
-//!   that an ear test looks only at the vertices near its triangle.
+//!   that an ear test looks only at the vertices near its triangle; for a long thin
+//!   triangle, only in the cells along it.
 
 use crate::pool::NodeId;
 use crate::predicates::Point;
@@ -290,6 +291,101 @@ pub(crate) fn scale(cells: usize, extent: f64) -> f64 {
     }
 }
 
+/// Whether the triangle `t` covers at most an eighth of its bounding box `lo..=hi` (or the
+/// test cannot say): only then does narrowing a search to it pay. A heuristic, in floating
+/// point.
+#[inline]
+fn thin(t: [Point; 3], lo: Point, hi: Point) -> bool {
+    let twice_area =
+        ((t[1].x - t[0].x) * (t[2].y - t[0].y) - (t[1].y - t[0].y) * (t[2].x - t[0].x)).abs();
+    twice_area.is_nan() || twice_area * 4.0 < (hi.x - lo.x) * (hi.y - lo.y)
+}
+
+/// A triangle prepared for [`Sliver::span`] in many rows.
+#[derive(Clone, Copy, Debug)]
+struct Sliver {
+    sides: [Side; 3],
+    /// Widening for rounding: a handful of roundings, each within 2⁻⁵² of the triangle's
+    /// coordinates; subnormals add an absolute error.
+    pad: f64,
+}
+
+/// One side of a [`Sliver`]: its y and x ranges, one end and its slope dx/dy (NaN for a
+/// horizontal side, or where the quotient overflows).
+#[derive(Clone, Copy, Debug)]
+struct Side {
+    y: (f64, f64),
+    x: (f64, f64),
+    p: Point,
+    slope: f64,
+}
+
+impl Sliver {
+    /// The triangle `t` with bounding box `lo..=hi` prepared, if it is thin enough for
+    /// narrowing to pay (always in the unit tests).
+    #[inline(never)]
+    fn of_thin(t: [Point; 3], lo: Point, hi: Point) -> Option<Sliver> {
+        (cfg!(test) || thin(t, lo, hi)).then(|| Sliver::new(t))
+    }
+
+    fn new(t: [Point; 3]) -> Sliver {
+        let mut size: f64 = 0.0;
+        let sides = [0, 1, 2].map(|k| {
+            let (p, q) = (t[k], t[(k + 1) % 3]);
+            size = size.max(p.x.abs());
+            let slope = (q.x - p.x) / (q.y - p.y);
+            Side {
+                y: (p.y.min(q.y), p.y.max(q.y)),
+                x: (p.x.min(q.x), p.x.max(q.x)),
+                p,
+                slope: if slope.is_finite() { slope } else { f64::NAN },
+            }
+        });
+        Sliver {
+            sides,
+            pad: size * 1e-12 + 1e-300,
+        }
+    }
+
+    /// The x range of the closed triangle where `y0 <= y <= y1`, widened to cover rounding,
+    /// or `None` where it misses that band (or the band is empty).
+    ///
+    /// Only narrows a search, so it must never come out too small: the triangle's part of
+    /// the band is a convex polygon whose corners lie on the triangle's sides, and each
+    /// side's part in the band spans x between its values at the band's ends (clamped to
+    /// the side).
+    fn span(&self, y0: f64, y1: f64) -> Option<(f64, f64)> {
+        if y0 > y1 {
+            return None;
+        }
+        // plain comparisons, and written so that a NaN picks the safe side
+        let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+        for side in &self.sides {
+            if side.y.1 < y0 || side.y.0 > y1 {
+                continue;
+            }
+            // x where the side is at y, for y within the side's range
+            let at = |y: f64| {
+                let y = if y > side.y.0 { y } else { side.y.0 };
+                let y = if y < side.y.1 { y } else { side.y.1 };
+                side.p.x + (y - side.p.y) * side.slope
+            };
+            let (xa, xb) = (at(y0), at(y1));
+            // within the side's x range: all of it for a horizontal side (NaN slope)
+            let (a, b) = if xa < xb { (xa, xb) } else { (xb, xa) };
+            let a = if a >= side.x.0 { a } else { side.x.0 };
+            let b = if b <= side.x.1 { b } else { side.x.1 };
+            if a < lo {
+                lo = a;
+            }
+            if b > hi {
+                hi = b;
+            }
+        }
+        (lo <= hi).then_some((lo - self.pad, hi + self.pad))
+    }
+}
+
 /// The edges of one cell of [`EdgeGrid`].
 pub(crate) struct CellIter<'a> {
     edges: &'a EdgeGrid,
@@ -309,6 +405,14 @@ impl Iterator for CellIter<'_> {
 /// `Cells` slot of a node that is not in the grid.
 const NONE: u32 = u32::MAX;
 
+/// A `Cells` query for a thin triangle looks, in each row of its box holding more than this
+/// many nodes, only at the columns the triangle itself reaches there: a sliver across the
+/// grid, such as a fan triangle from a comb's corner to its spine, then costs the cells
+/// along it, not its whole bounding box. Narrowing costs a little per row, so only full
+/// rows of thin triangles take it; the unit tests narrow every row of more than one node,
+/// to check it on every kind.
+const NARROW: usize = if cfg!(test) { 1 } else { 32 };
+
 /// Reflex nodes by grid cell (see the module docs), built once per polygon.
 ///
 /// Cell `c` holds `entries[start[c]..start[c + 1]]`, cells in row-major order, so the cells
@@ -325,6 +429,13 @@ pub(crate) struct Cells {
     nx: usize,
     ny: usize,
     start: Vec<u32>,
+    /// The largest y of the nodes (`y0` the smallest): a grid of nodes all at one y is one
+    /// row, a line rather than a band.
+    y1: f64,
+    /// `1 / sy` (0 when that is 0: a single row from `y0` to `y1`), and the widening of a
+    /// row's band that covers rounding (see `reach`).
+    row_height: f64,
+    row_pad: f64,
     /// Nodes with their positions: filtering by box needs no look-up in the pool.
     entries: Vec<(NodeId, Point)>,
     /// Each node's index in `entries` while it is live there, else `NONE` (or stale from
@@ -361,6 +472,9 @@ impl Cells {
         self.start.clear();
         self.start.resize(cells + 2, 0);
         self.cell_of.clear();
+        self.y1 = y1;
+        self.row_height = if self.sy > 0.0 { 1.0 / self.sy } else { 0.0 };
+        self.row_pad = (y1 - y0 + y0.abs() + y1.abs()) * 1e-12 + 1e-300;
         for &(_, p) in nodes {
             let c = self.cell(p);
             self.cell_of.push(c as u32);
@@ -416,10 +530,16 @@ impl Cells {
     }
 
     /// Calls `found` with every node listed in the box `lo..=hi` and its position until it
-    /// returns true; returns whether it did. Nodes added after building are not included
-    /// (see [`Cells::extra`]).
-    pub fn any_in_box(
+    /// returns true, and returns whether it did; `lo..=hi` is the bounding box of the
+    /// triangle `t`, and nodes outside the closed triangle may be left out. Nodes added
+    /// after building are not included (see [`Cells::extra`]).
+    ///
+    /// A thin triangle's box is searched, in each row holding more than [`NARROW`] nodes
+    /// there, only where the triangle reaches.
+    #[inline(always)]
+    pub fn any_in_triangle(
         &self,
+        t: [Point; 3],
         lo: Point,
         hi: Point,
         mut found: impl FnMut(NodeId, Point) -> bool,
@@ -430,10 +550,20 @@ impl Cells {
         // NaN (removed) positions fail every comparison
         let inside = |q: Point| q.x >= lo.x && q.x <= hi.x && q.y >= lo.y && q.y <= hi.y;
         let (c0, c1) = (self.column(lo.x), self.column(hi.x));
+        // the triangle prepared for narrowing, once a row asks for it: None if too fat
+        let mut sliver: Option<Option<Sliver>> = None;
         for row in self.row(lo.y)..=self.row(hi.y) {
-            let s = self.start[row * self.nx + c0] as usize;
-            let e = self.start[row * self.nx + c1 + 1] as usize;
-            if self.entries[s..e]
+            let mut s = self.start[row * self.nx + c0] as usize;
+            let mut e = self.start[row * self.nx + c1 + 1] as usize;
+            if e - s > NARROW {
+                if let Some(sliver) = sliver.get_or_insert_with(|| Sliver::of_thin(t, lo, hi)) {
+                    let (a, b) = self.reach(sliver, lo, hi, row);
+                    s = self.start[row * self.nx + a] as usize;
+                    e = self.start[row * self.nx + b] as usize;
+                }
+            }
+            // (one call site of `found`, so that it stays inlined)
+            if self.entries[s..e.max(s)]
                 .iter()
                 .any(|&(n, q)| inside(q) && found(n, q))
             {
@@ -441,6 +571,28 @@ impl Cells {
             }
         }
         false
+    }
+
+    /// The columns `a..b` (maybe empty) of row `row` that the triangle `sliver`, with
+    /// bounding box `lo..=hi`, reaches within the row's band.
+    #[inline(never)]
+    fn reach(&self, sliver: &Sliver, lo: Point, hi: Point, row: usize) -> (usize, usize) {
+        // the y range of the nodes in `row`, (y - y0) * sy rounding to `row` (or more, in
+        // the last row), widened for rounding; all of it when the grid is flat
+        let (mut bottom, mut top) = (self.y0, self.y1);
+        if self.row_height > 0.0 {
+            bottom = self.y0 + row as f64 * self.row_height - self.row_pad;
+            top = bottom + self.row_height + 2.0 * self.row_pad;
+        }
+        let y0 = if bottom > lo.y { bottom } else { lo.y };
+        let y1 = if top < hi.y { top } else { hi.y };
+        match sliver.span(y0, y1) {
+            Some((x0, x1)) => {
+                let (c0, c1) = (self.column(lo.x), self.column(hi.x));
+                (self.column(x0).max(c0), self.column(x1).min(c1) + 1)
+            }
+            None => (0, 0),
+        }
     }
 
     /// Nodes added after building, wherever they lie; entries may be stale.
@@ -514,9 +666,12 @@ mod tests {
         let mut cells = Cells::default();
         let listed: Vec<(NodeId, Point)> = nodes.iter().map(|&n| (n, pts[n.idx()])).collect();
         cells.build(&listed, 5);
+        // the nodes found in a right triangle whose legs are twice the box's sides
         let found = |cells: &Cells, lo: Point, hi: Point| {
+            let far = p(2.0 * hi.x - lo.x, 2.0 * hi.y - lo.y);
+            let t = [lo, p(far.x, lo.y), p(lo.x, far.y)];
             let mut v = Vec::new();
-            cells.any_in_box(lo, hi, |n, _| {
+            cells.any_in_triangle(t, lo, far, |n, _| {
                 v.push(n);
                 false
             });
@@ -530,5 +685,82 @@ mod tests {
         cells.remove(NodeId(1)); // not there: no effect
         cells.add(NodeId(1));
         assert!(found(&cells, p(3., 0.), p(3., 0.)).contains(&NodeId(1)));
+    }
+
+    /// The nodes `cells` offers for triangle `t`.
+    fn offered(cells: &Cells, t: [Point; 3]) -> Vec<NodeId> {
+        let lo = p(
+            t[0].x.min(t[1].x).min(t[2].x),
+            t[0].y.min(t[1].y).min(t[2].y),
+        );
+        let hi = p(
+            t[0].x.max(t[1].x).max(t[2].x),
+            t[0].y.max(t[1].y).max(t[2].y),
+        );
+        let mut v = Vec::new();
+        cells.any_in_triangle(t, lo, hi, |n, _| {
+            v.push(n);
+            false
+        });
+        v
+    }
+
+    #[test]
+    fn cells_offer_every_node_in_the_triangle() {
+        use crate::predicates::{orient2d, Orientation::*};
+        let mut random = crate::testing::random(0x9e37_79b9_7f4a_7c15);
+        let mut cells = Cells::default();
+        for round in 0..200 {
+            // points on a small lattice (many on triangle sides and on cell borders), some
+            // rounds squeezed into a thin band or a line, at an offset and scale
+            let (scale, offset) = ([1e-3, 1.0, 7.0, 1e6][round % 4], round as f64 * 0.37);
+            let flat = [1, 1, 4, 100][round / 4 % 4];
+            let coordinate = |v: u64, scale: f64| offset + v as f64 * scale;
+            let count = 20 + random(400) as usize;
+            let nodes: Vec<(NodeId, Point)> = (0..count)
+                .map(|i| {
+                    let (x, y) = (random(50), random(50) / flat);
+                    (
+                        NodeId(i as u32),
+                        p(coordinate(x, scale), coordinate(y, scale)),
+                    )
+                })
+                .collect();
+            cells.build(&nodes, count);
+            for _ in 0..50 {
+                let mut corner = || {
+                    p(
+                        coordinate(random(60), scale),
+                        coordinate(random(60) / flat, scale),
+                    )
+                };
+                let mut t = [corner(), corner(), corner()];
+                match orient2d(t[0], t[1], t[2]) {
+                    // ear triangles turn left (the clipper asks for no others)
+                    Collinear => continue,
+                    Clockwise => t.swap(1, 2),
+                    CounterClockwise => {}
+                }
+                let got = offered(&cells, t);
+                for &(n, q) in &nodes {
+                    let closed = (0..3).all(|k| orient2d(t[k], t[(k + 1) % 3], q) != Clockwise);
+                    assert!(!closed || got.contains(&n), "{q:?} in {t:?}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn cells_narrow_a_sliver_to_the_cells_it_crosses() {
+        // a comb's spine: a thousand nodes on y = 1, one row of cells; the fan triangle
+        // from the corner (0, 0) to the spine's edge 499–500 spans all of them in x
+        let nodes: Vec<(NodeId, Point)> = (0..1000)
+            .map(|i| (NodeId(i), p(f64::from(i), 1.0)))
+            .collect();
+        let mut cells = Cells::default();
+        cells.build(&nodes, 1000);
+        let got = offered(&cells, [p(0., 0.), p(500., 1.), p(499., 1.)]);
+        assert!(got.contains(&NodeId(499)) && got.contains(&NodeId(500)));
+        assert!(got.len() <= 4, "{got:?}");
     }
 }

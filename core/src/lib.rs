@@ -42,6 +42,9 @@ mod pool;
 mod predicates;
 mod prune;
 mod report;
+#[cfg(test)]
+mod testing;
+mod tips;
 mod touch;
 mod triangulator;
 mod validate;

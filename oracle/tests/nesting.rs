@@ -124,6 +124,44 @@ fn configurations() -> Vec<(String, Vec<Ring>)> {
         "copy spiked along a spiked triangle".into(),
         vec![copy, spiked_triangle],
     ));
+    // several rings through one point: a ring pinched into two lobes at (0, 0), a hole in
+    // one lobe touching the pinch, an island in that hole touching it there too
+    let pinched = vec![
+        [0.0, 0.0],
+        [8.0, -4.0],
+        [8.0, 4.0],
+        [0.0, 0.0],
+        [-8.0, 4.0],
+        [-8.0, -4.0],
+    ];
+    let hole = vec![[0.0, 0.0], [6.0, 2.0], [6.0, -2.0]];
+    let island = vec![[0.0, 0.0], [5.0, -1.0], [5.0, 1.0]];
+    out.push((
+        "pinched lobes, a hole at the pinch".into(),
+        vec![pinched.clone(), hole.clone()],
+    ));
+    out.push((
+        "pinched lobes, a hole and an island at the pinch".into(),
+        vec![island.clone(), pinched.clone(), hole.clone()],
+    ));
+    // two holes of a square touching each other and the square at one corner
+    let corner_holes = vec![
+        square(),
+        vec![[0.0, 0.0], [3.0, 1.0], [1.0, 1.0]],
+        vec![[0.0, 0.0], [1.0, 3.0], [1.0, 2.0]],
+    ];
+    out.push(("two holes at a corner".into(), corner_holes));
+    // an island in the other lobe's mirror: lobes of a pinched ring, each holding a
+    // triangle that touches the pinch (the second triangle crosses nothing either)
+    out.push((
+        "pinched lobes with a triangle in each".into(),
+        vec![
+            pinched,
+            hole,
+            vec![[0.0, 0.0], [-6.0, -2.0], [-6.0, 2.0]],
+            island,
+        ],
+    ));
     // a ring touching itself at (0, -1), where a triangle touches both of its lobes along
     // an edge each (raw_rings, seed 13)
     let lobes = vec![

@@ -174,7 +174,8 @@ impl<T: Copy> Sequence<T> for Blocks<T> {
     }
 
     fn replace(&mut self, lo: Cursor, hi: Cursor, items: &[T]) -> Cursor {
-        let (lo, hi) = (self.denorm(lo), self.denorm(hi));
+        // (`hi` before `lo` would be a caller's mistake: read as an empty run)
+        let (lo, hi) = (self.denorm(lo), self.denorm(hi.max(lo)));
         if let (true, Some(&s)) = (lo.blk == hi.blk, self.order.get(lo.blk)) {
             if let Some(b) = self.slots.get_mut(s) {
                 let now = b.len() - (hi.off - lo.off) + items.len();

@@ -3,7 +3,9 @@
 //! The sweep visits the nodes in lexicographic order (x, then y). That is the order in which
 //! a sweep line tilted infinitesimally off the vertical meets them, so a vertical edge is an
 //! ordinary edge whose lower endpoint is its left one, and at any moment the edges crossing
-//! the line have a bottom-to-top order: the *status*, a sorted `Vec`.
+//! the line have a bottom-to-top order: the *status*, a sorted `Vec` while short, [`Blocks`]
+//! once it grows long, so that a line crossing Θ(n) edges still costs about O(log n) per
+//! event.
 //!
 //! At each event point p (all nodes at one position) the edges through p form one contiguous
 //! run of the status: edges strictly below p come before it, edges strictly above come after.
@@ -20,6 +22,7 @@
 
 use core::cmp::Ordering;
 
+use crate::blocks::{Blocks, Sequence};
 use crate::grid::EdgeGrid;
 use crate::pool::{NodeId, Pool};
 use crate::predicates::{cmp_xy, on_segment, orient2d, Orientation, Point};
@@ -49,10 +52,15 @@ pub(crate) struct SweepScratch {
     pub order_is_sorted: bool,
     /// `order` with its sort keys while it is sorted (see [`sort_key`]).
     keyed: Vec<(i64, i64, NodeId)>,
-    /// The edges crossing the sweep line, bottom to top.
+    /// The edges crossing the sweep line, bottom to top, while few.
     status: Vec<Seg>,
+    /// The same once many (see [`CHUNK_AT`]).
+    blocks: Blocks<Seg>,
     /// The edges through the current event point while they are re-sorted.
     run: Vec<Seg>,
+    /// Keeps the status flat however long it grows, to compare with chunking.
+    #[cfg(test)]
+    flat_only: bool,
 }
 
 /// One edge as the sweep sees it: its start node and its endpoints in sweep order (`l < r`).
@@ -74,12 +82,22 @@ pub(crate) fn sweep(
     touches: &mut Vec<Touch>,
     crossings: &mut Vec<Crossing>,
 ) {
+    #[cfg(test)]
+    let chunk_at = if scratch.flat_only {
+        usize::MAX
+    } else {
+        CHUNK_AT
+    };
+    #[cfg(not(test))]
+    let chunk_at = CHUNK_AT;
     let SweepScratch {
         order,
         order_is_sorted,
         keyed,
         status,
+        blocks,
         run,
+        ..
     } = scratch;
     if !core::mem::take(order_is_sorted) {
         collect_nodes(pool, starts, order);
@@ -94,16 +112,22 @@ pub(crate) fn sweep(
         order.clear();
         order.extend(keyed.iter().map(|k| k.2));
     }
-    status.clear();
     run.clear();
     // There are at most as many edges as nodes: reserving that much up front means a
     // warmed-up scratch never allocates during the sweep.
+    status.clear();
     status.reserve(order.len());
     run.reserve(order.len());
     let first_crossing = crossings.len();
+    let mut status = Status {
+        flat: status,
+        blocks,
+        chunked: false,
+        chunk_at,
+        room: order.len(),
+    };
     let mut sw = Sweep {
         pool,
-        status,
         run,
         stop_at_first_crossing,
         touches,
@@ -119,7 +143,7 @@ pub(crate) fn sweep(
             .iter()
             .position(|&m| key_cmp(pool.p(m), p) != Ordering::Equal);
         let group = &rest[..len.unwrap_or(rest.len())];
-        if sw.event(group, p) {
+        if sw.event(&mut status, group, p) {
             break;
         }
         // The group holds at least node n itself, so the sweep always advances.
@@ -175,6 +199,8 @@ fn in_interior(s: &Seg, p: Point) -> bool {
 
 /// True when the interiors of `s` and `t` cross at one point: each one's endpoints lie
 /// strictly on opposite sides of the other's line.
+// inlined into the sweep's hot loops, where most calls return at the box test
+#[inline(always)]
 fn properly_cross(s: &Seg, t: &Seg) -> bool {
     // edges whose boxes are apart (most neighbours in the status) cannot cross: compared
     // exactly, and without four orientation tests
@@ -257,10 +283,29 @@ fn dedup_crossings(crossings: &mut Vec<Crossing>, from: usize) {
     crossings.truncate(kept);
 }
 
+/// Statuses longer than this are split into blocks while the sweep is in order: below it,
+/// shifting a flat `Vec` is cheaper. (Unit tests chunk almost every status.)
+const CHUNK_AT: usize = if cfg!(test) {
+    3
+} else {
+    4 * crate::blocks::BLOCK
+};
+
+/// The status, in one of its two forms.
+struct Status<'a> {
+    flat: &'a mut Vec<Seg>,
+    blocks: &'a mut Blocks<Seg>,
+    /// The edges are in `blocks`, not `flat`.
+    chunked: bool,
+    /// A flat status longer than this is chunked while in order ([`CHUNK_AT`]).
+    chunk_at: usize,
+    /// The most edges the status will hold.
+    room: usize,
+}
+
 /// What one sweep reads and writes, so its steps need not pass many arguments.
 struct Sweep<'a> {
     pool: &'a Pool,
-    status: &'a mut Vec<Seg>,
     run: &'a mut Vec<Seg>,
     stop_at_first_crossing: bool,
     touches: &'a mut Vec<Touch>,
@@ -272,47 +317,70 @@ struct Sweep<'a> {
 
 impl Sweep<'_> {
     /// Handles the event point `p`, where the nodes of `group` lie. Returns true to stop.
-    fn event(&mut self, group: &[NodeId], p: Point) -> bool {
-        let (lo, hi) = self.run_through(p);
-        if self.take_run(group, p, lo, hi) {
+    fn event(&mut self, status: &mut Status, group: &[NodeId], p: Point) -> bool {
+        if status.chunked && !self.ordered {
+            // out of order, searches must probe exactly as over one flat `Vec`
+            status.blocks.drain_into(status.flat);
+            status.chunked = false;
+        } else if !status.chunked && self.ordered && status.flat.len() > status.chunk_at {
+            status.blocks.assign(status.flat, status.room);
+            status.chunked = true;
+        }
+        if status.chunked {
+            self.event_in(&mut *status.blocks, group, p)
+        } else {
+            self.event_in(&mut *status.flat, group, p)
+        }
+    }
+
+    /// [`Self::event`] on the status in either form.
+    fn event_in<S: Sequence<Seg>>(&mut self, status: &mut S, group: &[NodeId], p: Point) -> bool {
+        let (lo, hi) = self.run_through(status, p);
+        if self.take_run(status, group, p, lo, hi) {
             return true;
         }
         self.add_starting(group, p);
         heapsort(self.run, |a, b| below_after(p, a, b));
-        self.put_run(lo, hi);
-        self.check_neighbours(lo, self.run.len())
+        let at = status.replace(lo, hi, self.run);
+        self.check_neighbours(status, at, self.run.len())
     }
 
     /// The status range `lo..hi` of the edges through `p`. The status is ordered bottom to
     /// top, so edges strictly below p are a prefix and edges strictly above a suffix.
-    fn run_through(&self, p: Point) -> (usize, usize) {
+    fn run_through<S: Sequence<Seg>>(&self, status: &S, p: Point) -> (S::Pos, S::Pos) {
         // Every status edge has l < p <= r in sweep order, so "p left of l → r" means p is
         // above the edge (a vertical edge there always has p on it).
-        let lo = self
-            .status
-            .partition_point(|s| orient2d(s.l, s.r, p) == Orientation::CounterClockwise);
-        let rest = &self.status[lo..];
+        let lo = status.search(|s| orient2d(s.l, s.r, p) == Orientation::CounterClockwise);
         let through = |s: &Seg| orient2d(s.l, s.r, p) != Orientation::Clockwise;
-        let run = if self.ordered {
-            // in order, `through` holds for a prefix of `rest`: the edges at p, usually
+        let hi = if self.ordered {
+            // in order, `through` holds for a prefix of the rest: the edges at p, usually
             // none or two, so walking it is cheaper than a binary search and gives the same
-            rest.iter().position(|s| !through(s)).unwrap_or(rest.len())
+            status.walk(lo, through)
         } else {
-            // out of order, the binary search's answer is the one this sweep has always
-            // given (lenient results depend on it)
-            rest.partition_point(through)
+            // out of order (the status is flat then), the binary search's answer is the one
+            // this sweep has always given (lenient results depend on it)
+            status.search_from(lo, through)
         };
-        (lo, lo + run)
+        (lo, hi)
     }
 
     /// Copies the run's edges that continue past `p` into `run`, reporting a touch for every
     /// node at p on each and a crossing for continuing edges of different directions; edges
     /// ending at p are dropped. Returns true to stop.
-    fn take_run(&mut self, group: &[NodeId], p: Point, lo: usize, hi: usize) -> bool {
+    fn take_run<S: Sequence<Seg>>(
+        &mut self,
+        status: &S,
+        group: &[NodeId],
+        p: Point,
+        lo: S::Pos,
+        hi: S::Pos,
+    ) -> bool {
         self.run.clear();
         let mut through: Option<Seg> = None;
-        for i in lo..hi {
-            let Some(&s) = self.status.get(i) else { break };
+        let mut at = lo;
+        while at < hi {
+            let Some(s) = status.item(at) else { break };
+            at = status.after(at);
             // Ends at p — or, after an undetected crossing, an edge the sweep failed to
             // remove in time: either way it is behind the sweep line now.
             if key_cmp(s.r, p) != Ordering::Greater {
@@ -343,6 +411,7 @@ impl Sweep<'_> {
     /// Appends to `run` the edges whose left endpoint is `p`. Each edge is taken once: at its
     /// start node when that comes first in sweep order, else at its end node. Zero-length
     /// edges are never taken.
+    #[inline(always)]
     fn add_starting(&mut self, group: &[NodeId], p: Point) {
         let pool = self.pool;
         for &n in group {
@@ -365,30 +434,23 @@ impl Sweep<'_> {
         }
     }
 
-    /// Replaces `status[lo..hi]` with `run`, shifting the tail. The capacity was reserved,
-    /// so this never allocates.
-    fn put_run(&mut self, lo: usize, hi: usize) {
-        let (m, r, len) = (self.run.len(), hi - lo, self.status.len());
-        if let (true, Some(&fill)) = (m > r, self.run.first()) {
-            self.status.resize(len + (m - r), fill);
-            self.status.copy_within(hi..len, hi + (m - r));
-        } else if m < r {
-            self.status.copy_within(hi..len, lo + m);
-            self.status.truncate(len - (r - m));
-        }
-        self.status[lo..lo + m].copy_from_slice(self.run);
-    }
-
-    /// Tests every pair that may have become adjacent at this event: the run `lo..lo+m`
-    /// with its neighbours below and above, and within itself. Returns true to stop.
-    fn check_neighbours(&mut self, lo: usize, m: usize) -> bool {
-        let end = (lo + m).min(self.status.len().saturating_sub(1));
-        for i in lo.saturating_sub(1)..end {
-            if let (Some(&a), Some(&b)) = (self.status.get(i), self.status.get(i + 1)) {
-                if properly_cross(&a, &b) && self.cross(a.edge, b.edge) {
-                    return true;
-                }
+    /// Tests every pair that may have become adjacent at this event: the run of `m` edges
+    /// at `at` with its neighbours below and above, and within itself. Returns true to stop.
+    fn check_neighbours<S: Sequence<Seg>>(&mut self, status: &S, at: S::Pos, m: usize) -> bool {
+        let (mut c, pairs) = match status.before(at) {
+            Some(below) => (below, m + 1),
+            None => (at, m),
+        };
+        let Some(mut a) = status.item(c) else {
+            return false;
+        };
+        for _ in 0..pairs {
+            c = status.after(c);
+            let Some(b) = status.item(c) else { break };
+            if properly_cross(&a, &b) && self.cross(a.edge, b.edge) {
+                return true;
             }
+            a = b;
         }
         false
     }
@@ -499,7 +561,8 @@ mod tests {
         Pool::from_rings(rings)
     }
 
-    /// The result of one sweep: touches sorted, crossings as found, and the node order.
+    /// The result of one sweep: touches (sorted by [`run`]), crossings as found, and the
+    /// node order.
     struct Found {
         touches: Vec<Touch>,
         crossings: Vec<Crossing>,
@@ -508,7 +571,18 @@ mod tests {
 
     /// Runs the sweep on fresh buffers.
     fn run(pool: &Pool, starts: &[NodeId], stop: bool) -> Found {
-        let mut scratch = SweepScratch::default();
+        let mut found = run_with(pool, starts, stop, false);
+        found.touches.sort_unstable_by_key(|t| (t.vertex, t.edge));
+        found
+    }
+
+    /// Runs the sweep on fresh buffers, with the status kept flat when `flat_only`. Touches
+    /// stay in the order found.
+    fn run_with(pool: &Pool, starts: &[NodeId], stop: bool, flat_only: bool) -> Found {
+        let mut scratch = SweepScratch {
+            flat_only,
+            ..SweepScratch::default()
+        };
         let (mut touches, mut crossings) = (Vec::new(), Vec::new());
         sweep(
             pool,
@@ -518,7 +592,6 @@ mod tests {
             &mut touches,
             &mut crossings,
         );
-        touches.sort_unstable_by_key(|t| (t.vertex, t.edge));
         Found {
             touches,
             crossings,
@@ -610,6 +683,11 @@ mod tests {
         let real = brute_crossings(&pool, &starts);
         let is_real = |c: &Crossing| brute_cross(&pool, c.a, c.b);
         for stop in [false, true] {
+            // a chunked status finds exactly what a flat one finds, in the same order
+            let chunked = run_with(&pool, &starts, stop, false);
+            let flat = run_with(&pool, &starts, stop, true);
+            assert_eq!(chunked.touches, flat.touches, "{rings:?}");
+            assert_eq!(chunked.crossings, flat.crossings, "{rings:?}");
             let got = run(&pool, &starts, stop);
             check_order(&pool, &starts, &got.order);
             assert!(

@@ -88,6 +88,23 @@ fn inputs() -> Vec<(String, Flat, Nesting)> {
         let rings = rings_from_json(&read_json(&format!("cases/{name}.json"))["rings"]);
         v.push((name.to_string(), flatten(&rings), Nesting::Auto));
     }
+    // a star: the sweep line crosses thousands of spikes, so the check's status is chunked
+    let mut seed = 12345u64;
+    let star: Vec<[f64; 2]> = (0..4000)
+        .map(|i| {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            let r = 0.2 + 0.8 * ((seed >> 11) as f64 / (1u64 << 53) as f64);
+            let a = i as f64 * core::f64::consts::TAU / 4000.0;
+            [r * a.cos(), r * a.sin()]
+        })
+        .collect();
+    v.push((
+        "star".to_string(),
+        flatten(&vec![star]),
+        Nesting::FirstIsOuter,
+    ));
     v
 }
 

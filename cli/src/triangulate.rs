@@ -305,6 +305,27 @@ fn describe_error(refusal: &Refusal, layout: &Layout, precision: Precision) -> S
                 ring(r)
             )
         }
+        Error::RingsCrossAtVertex {
+            ring_a,
+            ring_b,
+            vertex: v,
+            ..
+        } => {
+            if ring_a == ring_b {
+                format!(
+                    "{} crosses itself at {}, where it passes twice {hint}",
+                    ring(ring_a),
+                    vertex(v)
+                )
+            } else {
+                format!(
+                    "{} and {} cross each other at {}, where both pass {hint}",
+                    ring(ring_a),
+                    ring(ring_b),
+                    vertex(v)
+                )
+            }
+        }
         Error::HoleOutside { ring: r } => {
             format!(
                 "{} is a hole outside its outer ring, or inside another hole {hint}",
@@ -395,6 +416,20 @@ mod tests {
         let message = describe_error(&refusal, &layout, Precision::F64);
         assert!(
             message.starts_with("polygon 1, ring 1 is a hole"),
+            "{message}"
+        );
+        let refusal = Refusal {
+            error: Error::RingsCrossAtVertex {
+                ring_a: 0,
+                ring_b: 1,
+                vertex: 6,
+            },
+            vertex_offset: 4,
+            ring_offset: 1,
+        };
+        let message = describe_error(&refusal, &layout, Precision::F64);
+        assert!(
+            message.starts_with("polygon 1, ring 0 and polygon 1, ring 1 cross each other at polygon 1, ring 1, vertex 2"),
             "{message}"
         );
     }

@@ -44,9 +44,7 @@ pub enum Error {
         count: usize,
     },
     /// Two edges cross (strict mode only). Each edge is named by the input vertex it starts
-    /// at and its ring; the edge runs to the next kept vertex of that ring. Rings crossing
-    /// each other at a vertex they share (an X there) are named by two of their nodes at
-    /// that vertex.
+    /// at and its ring; the edge runs to the next kept vertex of that ring.
     EdgesCross {
         /// Ring of the first edge.
         ring_a: usize,
@@ -65,6 +63,19 @@ pub enum Error {
         /// The ring all of whose corners are shared.
         ring: usize,
         /// One of its vertices.
+        vertex: usize,
+    },
+    /// Rings cross each other at a vertex of one of them that the other passes through (at
+    /// a vertex of its own, or inside an edge), as an X: going round the vertex, the
+    /// polygon's winding number takes three values (strict mode only). No two edges cross
+    /// at a point inside both, so it is not [`Error::EdgesCross`]. The two rings may be one
+    /// ring passing the vertex twice.
+    RingsCrossAtVertex {
+        /// One ring through the vertex.
+        ring_a: usize,
+        /// Another ring through it (or `ring_a` again).
+        ring_b: usize,
+        /// The vertex (one of the input vertices at that position).
         vertex: usize,
     },
     /// With [`Nesting::FirstIsOuter`](crate::Nesting::FirstIsOuter): a hole is not inside the
@@ -121,6 +132,22 @@ impl fmt::Display for Error {
             Error::RingsOverlap { ring, vertex } => write!(
                 f,
                 "ring {ring} overlaps another ring: it lies on that ring's boundary (e.g. at vertex {vertex}) and would cover its inside twice"
+            ),
+            Error::RingsCrossAtVertex {
+                ring_a,
+                ring_b,
+                vertex,
+            } if ring_a == ring_b => write!(
+                f,
+                "ring {ring_a} crosses itself at vertex {vertex}, where it passes twice"
+            ),
+            Error::RingsCrossAtVertex {
+                ring_a,
+                ring_b,
+                vertex,
+            } => write!(
+                f,
+                "rings {ring_a} and {ring_b} cross each other at vertex {vertex}, where both pass"
             ),
             Error::HoleOutside { ring } => write!(
                 f,

@@ -85,11 +85,10 @@ fn check_shared_positions(cx: &mut Context) -> Result<(), Error> {
         }
         if hi - lo > 1 {
             let (a, b) = (cx.pool.get(cx.shared[i]), cx.pool.get(cx.shared[j - 1]));
-            result = Err(Error::EdgesCross {
+            result = Err(Error::RingsCrossAtVertex {
                 ring_a: cx.rings[a.ring as usize].input as usize,
-                edge_a: a.vertex as usize,
                 ring_b: cx.rings[b.ring as usize].input as usize,
-                edge_b: b.vertex as usize,
+                vertex: a.vertex as usize,
             });
             break;
         }

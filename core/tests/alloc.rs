@@ -100,11 +100,7 @@ fn inputs() -> Vec<(String, Flat, Nesting)> {
             [r * a.cos(), r * a.sin()]
         })
         .collect();
-    v.push((
-        "star".to_string(),
-        flatten(&vec![star]),
-        Nesting::FirstIsOuter,
-    ));
+    v.push(("star".to_string(), flatten(&[star]), Nesting::FirstIsOuter));
     v
 }
 

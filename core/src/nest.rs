@@ -241,53 +241,25 @@ fn depth_of(cx: &mut Context, b: usize) -> u32 {
 /// contains b ([`compute_depths`] checks that their depths then differ by one, from
 /// `cx.overlaps`).
 fn depth_by_dropped(cx: &mut Context, b: usize) -> u32 {
-    let v = cx.rings[b].rightmost;
-    let pv = cx.pool.p(v);
-    let mut touching = core::mem::take(&mut cx.order);
-    rings_through(cx, b, pv, &mut touching);
-    cx.order = touching;
-    let mut counts = core::mem::take(&mut cx.touch_winding);
-    counts.clear();
-    counts.resize(cx.order.len(), 0);
-    let (winding, ray) = winding_number(cx, b, pv, &mut counts);
-    let mut depth = winding.max(0) as u32;
-    let mut open = 0;
-    for (k, &base) in counts.iter().enumerate() {
-        let q = cx.order[k];
-        match locally_inside(cx, v, q as usize, ray, base) {
-            Some(inside) => depth += u32::from(inside),
-            None => {
-                cx.order[open] = q;
-                open += 1;
-            }
-        }
-    }
-    cx.order.truncate(open);
+    let mut depth = decide_at(cx, b, cx.rings[b].rightmost);
     // the edges of the open rings that cleaning dropped: each has a dropped end
     let mut dropped = core::mem::take(&mut cx.dropped_edges);
     dropped.clear();
     for &q in &cx.order {
         let block = loaded(cx, q as usize);
-        let at = |i: usize| cx.pool.nodes[i].p;
+        let node = |i: usize| &cx.pool.nodes[i];
         for i in block.clone() {
-            if cx.pool.nodes[i].removed {
-                let before = if i == *block.start() {
-                    *block.end()
-                } else {
-                    i - 1
-                };
-                dropped.push((q, at(before), at(i)));
-            }
             let after = if i == *block.end() {
                 *block.start()
             } else {
                 i + 1
             };
-            if cx.pool.nodes[i].removed && !cx.pool.nodes[after].removed {
-                dropped.push((q, at(i), at(after)));
+            if node(i).removed || node(after).removed {
+                dropped.push((q, node(i).p, node(after).p));
             }
         }
     }
+    let mut counts = core::mem::take(&mut cx.touch_winding);
     let mut through = core::mem::take(&mut cx.probe_rings);
     for i in loaded(cx, b) {
         if cx.order.is_empty() {
@@ -343,6 +315,14 @@ fn rings_through(cx: &Context, b: usize, p: Point, out: &mut Vec<u32>) {
 /// The depth of ring `b` decided at its node `v`, or `None` when both of b's edges at v
 /// run along rings passing through v's position.
 fn depth_at(cx: &mut Context, b: usize, v: NodeId) -> Option<u32> {
+    let depth = decide_at(cx, b, v);
+    cx.order.is_empty().then_some(depth)
+}
+
+/// How many rings contain ring `b`, among those that decide it at its node `v`: every ring
+/// off v's position by the winding number, the rings passing through it locally. The rings
+/// along both of b's edges at v decide nothing there and are left open in `cx.order`.
+fn decide_at(cx: &mut Context, b: usize, v: NodeId) -> u32 {
     let pv = cx.pool.p(v);
     // Rings passing through V: decided locally, their windings kept apart.
     let mut touching = core::mem::take(&mut cx.order);
@@ -350,21 +330,26 @@ fn depth_at(cx: &mut Context, b: usize, v: NodeId) -> Option<u32> {
     cx.order = touching;
     if cx.order.is_empty() && v == cx.rings[b].rightmost && cx.crossings.is_empty() {
         if let Some(depth) = depth_from_nearest(cx, b, pv) {
-            return Some(depth);
+            return depth;
         }
     }
     let mut beyond = core::mem::take(&mut cx.touch_winding);
     beyond.clear();
     beyond.resize(cx.order.len(), 0);
     let (winding, ray) = winding_number(cx, b, pv, &mut beyond);
-    let mut depth = Some(winding.max(0) as u32);
+    let mut depth = winding.max(0) as u32;
+    let mut open = 0;
     for (k, &base) in beyond.iter().enumerate() {
-        let r = cx.order[k] as usize;
-        depth = match (depth, locally_inside(cx, v, r, ray, base)) {
-            (Some(d), Some(inside)) => Some(d + u32::from(inside)),
-            _ => None,
-        };
+        let r = cx.order[k];
+        match locally_inside(cx, v, r as usize, ray, base) {
+            Some(inside) => depth += u32::from(inside),
+            None => {
+                cx.order[open] = r;
+                open += 1;
+            }
+        }
     }
+    cx.order.truncate(open);
     cx.touch_winding = beyond;
     depth
 }

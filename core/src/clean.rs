@@ -66,6 +66,11 @@ pub(crate) fn clean(cx: &mut Context, untwist: bool) -> Result<bool, Error> {
         let first_split = cx.pool.len();
         split_touched_edges(cx);
         collect_shared(cx, first_split);
+        // (crossing input has no region to keep, and its repairs, untwisting included,
+        // were tuned on whole rings)
+        if cx.lenient && !untwist && cx.crossings.is_empty() {
+            cx.split_lobes = crate::lobes::split(cx);
+        }
     }
     for r in 0..cx.rings.len() {
         if cx.rings[r].alive {

@@ -24,7 +24,7 @@
 //! # }
 //! ```
 //!
-//! The pipeline, one module per stage: `load` → `clean` → `nest` (and `touch`) → `bridge` →
+//! The pipeline, one module per stage: `load` → `clean` (and, lenient, `lobes`) → `nest` (and `touch`) → `bridge` →
 //! `clip`.
 //! See `DESIGN.md` in the repository.
 #![forbid(unsafe_code)]
@@ -37,6 +37,7 @@ mod clip;
 mod error;
 mod grid;
 mod load;
+mod lobes;
 mod nest;
 mod options;
 mod pool;

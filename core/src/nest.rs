@@ -34,6 +34,9 @@ pub(crate) fn nest(cx: &mut Context, nesting: Nesting) -> Result<(), Error> {
     match nesting {
         Nesting::Auto if alive > 1 => compute_depths(cx)?,
         Nesting::Auto => {}
+        // Lobes of one ring have no ring number of their own to give them a role:
+        // containment decides, which for a valid input is what the roles would say.
+        Nesting::FirstIsOuter if cx.split_lobes => compute_depths(cx)?,
         Nesting::FirstIsOuter => first_is_outer(cx)?,
     }
     for r in 0..cx.rings.len() {
@@ -284,14 +287,28 @@ fn depth_by_dropped(cx: &mut Context, b: usize) -> u32 {
     cx.probe_rings = through;
     cx.touch_winding = counts;
     cx.dropped_edges = dropped;
+    // Two rings with one boundary each lie on the other, and both count the other: strict
+    // mode refuses that below (the oracle, too, sees the region covered twice). Lenient
+    // mode makes the one decided first the inside one, so that they cancel, as the
+    // even-odd rule has it; that is also what the input means where the two are lobes
+    // of rings cut by `lobes` (the same lobe of two figure eights).
+    if cx.lenient {
+        let overlaps = &cx.overlaps;
+        cx.order.retain(|&q| !overlaps.contains(&(q, b as u32)));
+    }
     for &q in &cx.order {
         cx.overlaps.push((b as u32, q));
     }
     depth + cx.order.len() as u32
 }
 
-/// The pool indices of the nodes loaded for ring `r`, in input order.
+/// The pool indices of the nodes loaded for ring `r`, in input order; none for a ring
+/// split into lobes (its loaded nodes now lie on several rings).
 fn loaded(cx: &Context, r: usize) -> core::ops::RangeInclusive<usize> {
+    if crate::lobes::was_split(cx, r) {
+        #[allow(clippy::reversed_empty_ranges)]
+        return 1..=0;
+    }
     let (first, count) = cx.blocks.get(r).copied().unwrap_or((0, 0));
     let first = first as usize;
     first..=(first + count as usize).saturating_sub(1).max(first)

@@ -88,7 +88,10 @@ fn relink(cx: &mut Context, i: usize, j: usize) {
     let pairs = &mut cx.relink;
     pairs.sort_unstable_by_key(|&(_, t)| t);
     let conflict = pairs.windows(2).any(|w| w[0].1 == w[1].1);
-    if !cx.lenient && (conflict || any_doubled(cx, i, j)) {
+    // (lenient mode on crossing input keeps the rings as they are there: its repairs
+    // were tuned so)
+    let exact = !cx.lenient || cx.crossings.is_empty();
+    if exact && (conflict || any_doubled(cx, i, j)) {
         // Edges of one direction need ordering: the rule above sends an edge straight
         // back first, which closes a wall, but a crack into the region is walked along.
         if !relink_bundles(cx, i, j) {

@@ -125,6 +125,9 @@ pub(crate) struct Context {
     pub alt_out: Vec<[u32; 3]>,
     pub alt_untwisted: Vec<[u32; 3]>,
     pub clip: clip::ClipScratch,
+    /// Lenient mode: some ring touching itself was split into its lobes (see `lobes`).
+    pub split_lobes: bool,
+    pub lobes: crate::lobes::LobeScratch,
 }
 
 /// A copy of the node pool and the ring table, to try again from the same point.
@@ -160,6 +163,7 @@ impl Context {
         self.repairs.clear();
         self.lenient = lenient;
         self.bridge_left = false;
+        self.split_lobes = false;
     }
 
     /// Records a lenient-mode repair.

@@ -45,7 +45,10 @@ pub(crate) fn bridge(cx: &mut Context) -> Result<(), Error> {
     if cx.order.is_empty() {
         return Ok(());
     }
-    index_all_edges(cx);
+    if !cx.grid_current {
+        index_all_edges(cx);
+    }
+    debug_assert!(grid_lists_every_edge(cx), "a stale edge grid");
     let (pool, rings) = (&cx.pool, &cx.rings);
     cx.order.sort_unstable_by(|&a, &b| {
         let (pa, pb) = (
@@ -61,6 +64,20 @@ pub(crate) fn bridge(cx: &mut Context) -> Result<(), Error> {
         eliminate_hole(cx, hole)?;
     }
     Ok(())
+}
+
+/// Whether the edge grid lists every edge of the live rings under the node it starts at,
+/// at both ends (debug builds check this where `bridge` reuses the grid `nest` built).
+fn grid_lists_every_edge(cx: &Context) -> bool {
+    cx.rings.iter().filter(|r| r.alive).all(|ring| {
+        cx.pool.ring(ring.start).all(|n| {
+            // listed where the edge's box lies: at both ends, at least
+            let (a, b) = (cx.pool.p(n), cx.pool.p(cx.pool.next(n)));
+            [a, b]
+                .iter()
+                .all(|&p| cx.edge_grid.query(p, p).any(|e| e == n))
+        })
+    })
 }
 
 /// Bridges one hole into the ring around it.

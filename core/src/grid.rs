@@ -98,6 +98,18 @@ impl EdgeGrid {
         self.ny
     }
 
+    /// Renames listed edges: the edge listed as `n` is listed as `rename(n)` from now on
+    /// (when a ring is reversed, the edge from n to its old successor starts at that
+    /// successor). Cheaper than listing every edge again: no cell is computed.
+    pub fn rename(&mut self, mut rename: impl FnMut(NodeId) -> NodeId) {
+        for (n, _) in &mut self.entries {
+            *n = rename(*n);
+        }
+        for n in &mut self.long {
+            *n = rename(*n);
+        }
+    }
+
     /// Lists the edge starting at `n`, running from `a` to `b`.
     pub fn insert(&mut self, n: NodeId, a: Point, b: Point) {
         if self.head.is_empty() {

@@ -39,11 +39,26 @@ pub(crate) fn nest(cx: &mut Context, nesting: Nesting) -> Result<(), Error> {
         Nesting::FirstIsOuter if cx.split_lobes => compute_depths(cx)?,
         Nesting::FirstIsOuter => first_is_outer(cx)?,
     }
+    let mut reversed = false;
     for r in 0..cx.rings.len() {
         let ring = cx.rings[r];
         if ring.alive && ring.depth % 2 == 1 {
             cx.pool.reverse(ring.start);
+            reversed = true;
         }
+    }
+    if reversed && cx.grid_current {
+        // the edge grid `compute_depths` built stays of use to `bridge`: in a reversed
+        // ring, the edge listed as n (to its old successor) now starts at that node
+        let (pool, rings) = (&cx.pool, &cx.rings);
+        cx.edge_grid.rename(|n| {
+            let node = pool.get(n);
+            if rings[node.ring as usize].depth % 2 == 1 {
+                node.prev
+            } else {
+                n
+            }
+        });
     }
     if cx.lenient {
         Ok(())
@@ -215,6 +230,7 @@ pub(crate) fn index_all_edges(cx: &mut Context) {
                 .insert(n, cx.pool.p(n), cx.pool.p(cx.pool.next(n)));
         }
     }
+    cx.grid_current = true;
 }
 
 /// The number of rings containing ring `b`, decided at its rightmost vertex — or, where

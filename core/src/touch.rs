@@ -36,6 +36,8 @@ pub(crate) fn same_position_end(cx: &Context, i: usize) -> usize {
 /// Re-links every shared position and re-traces the rings; returns the number of holes.
 pub(crate) fn join(cx: &mut Context) -> usize {
     if !cx.shared.is_empty() {
+        // relinking changes which node an edge starts at
+        cx.grid_current = false;
         let mut i = 0;
         while i < cx.shared.len() {
             let j = same_position_end(cx, i);

@@ -125,6 +125,9 @@ pub(crate) struct Context {
     pub alt_out: Vec<[u32; 3]>,
     pub alt_untwisted: Vec<[u32; 3]>,
     pub clip: clip::ClipScratch,
+    /// `edge_grid` lists every live edge of the live rings as they are linked now (set by
+    /// `nest::index_all_edges`; whatever relinks nodes before `bridge` clears it).
+    pub grid_current: bool,
     /// Lenient mode: some ring touching itself was split into its lobes (see `lobes`).
     pub split_lobes: bool,
     pub lobes: crate::lobes::LobeScratch,
@@ -164,6 +167,7 @@ impl Context {
         self.lenient = lenient;
         self.bridge_left = false;
         self.split_lobes = false;
+        self.grid_current = false;
     }
 
     /// Records a lenient-mode repair.
@@ -190,6 +194,7 @@ fn run<T: Coord>(
         // The careful run is the first run up to the bridges: start from its state there
         // (load, clean, nest, touch and the crossing flags are deterministic).
         cx.before_bridge.restore(&mut cx.pool, &mut cx.rings);
+        cx.grid_current = false;
         copy_into(&mut cx.dropped, &cx.before_bridge_dropped);
         copy_into(&mut cx.repairs, &cx.before_bridge_repairs);
         copy_into(&mut cx.crossings, &cx.before_bridge_crossings);

@@ -785,19 +785,18 @@ impl<'a> Clipper<'a> {
     /// best triangle it can. Returns a live node to go on from (`len` is 0 when done).
     fn stuck(&mut self, at: NodeId) -> Result<NodeId, Error> {
         let at = self.live(at);
-        let mut n = at;
-        let mut convex = None;
-        let mut relaxed = None;
-        for _ in 0..self.len {
-            if turn(self.cx, n) == Orientation::CounterClockwise {
-                convex = convex.or(Some(n));
-                if relaxed.is_none() && !self.has_vertex_inside(n) {
-                    relaxed = Some(n);
+        // the first convex corner from `at` (the ring is unchanged until the forced ear
+        // below, unless a repair returns first)
+        let convex_after = |cx: &Context, len: usize, mut n: NodeId| {
+            for _ in 0..len {
+                if turn(cx, n) == Orientation::CounterClockwise {
+                    return Some(n);
                 }
+                n = cx.pool.next(n);
             }
-            n = self.cx.pool.next(n);
-        }
-        let Some(convex) = convex else {
+            None
+        };
+        let Some(convex) = convex_after(self.cx, self.len, at) else {
             // all straight or reflex: no area left (a counter-clockwise ring with area has
             // a left turn), so this piece is done — unless it turns right somewhere: then
             // it is a lobe winding against the rest of its ring, which strict mode refuses
@@ -830,6 +829,19 @@ impl<'a> Clipper<'a> {
             self.len = 0;
             return Ok(at);
         }
+        // the first convex corner with no vertex inside, else the first convex one
+        let mut relaxed = None;
+        let mut n = convex;
+        for _ in 0..self.len {
+            if turn(self.cx, n) == Orientation::CounterClockwise && !self.has_vertex_inside(n) {
+                relaxed = Some(n);
+                break;
+            }
+            n = self.cx.pool.next(n);
+            if n == at {
+                break;
+            }
+        }
         let tip = relaxed.unwrap_or(convex);
         self.note(RepairKind::ForcedEar, tip);
         Ok(self.cut(tip))
@@ -855,12 +867,11 @@ impl<'a> Clipper<'a> {
             if self.len <= 3 {
                 break;
             }
-            let pool = &self.cx.pool;
-            let (a, q) = (pool.prev(p), pool.next(p));
-            let b = pool.next(q);
-            let (pa, pp, pq, pb) = (pool.p(a), pool.p(p), pool.p(q), pool.p(b));
-            if pa != pb && crosses(pa, pp, pq, pb) && sees(pool, a, pb) && sees(pool, b, pa) {
-                match orient2d(pa, pp, pb) {
+            if self.local_crossing_at(p) {
+                let pool = &self.cx.pool;
+                let (a, q) = (pool.prev(p), pool.next(p));
+                let b = pool.next(q);
+                match orient2d(pool.p(a), pool.p(p), pool.p(b)) {
                     Orientation::CounterClockwise => self.emit(a, p, b),
                     Orientation::Clockwise => self.emit(a, b, p),
                     Orientation::Collinear => {}
@@ -876,6 +887,16 @@ impl<'a> Clipper<'a> {
             p = self.cx.pool.next(p);
         }
         cured
+    }
+
+    /// Whether edge prev(p) → p crosses edge next(p) → next(next(p)) where each end sees
+    /// the other (what [`Clipper::cure_local_intersections`] cures at p).
+    fn local_crossing_at(&self, p: NodeId) -> bool {
+        let pool = &self.cx.pool;
+        let (a, q) = (pool.prev(p), pool.next(p));
+        let b = pool.next(q);
+        let (pa, pp, pq, pb) = (pool.p(a), pool.p(p), pool.p(q), pool.p(b));
+        pa != pb && crosses(pa, pp, pq, pb) && sees(pool, a, pb) && sees(pool, b, pa)
     }
 
     /// earcut's `splitEarcut`: find a diagonal a–b that crosses no edge and leaves both
@@ -996,6 +1017,9 @@ fn sees(pool: &crate::pool::Pool, n: NodeId, q: Point) -> bool {
 /// Whether segments a–b and c–d cross at a point interior to both.
 pub(crate) fn crosses(a: Point, b: Point, c: Point, d: Point) -> bool {
     use Orientation::*;
+    if boxes_apart(a, b, c, d) {
+        return false;
+    }
     let (o1, o2) = (orient2d(a, b, c), orient2d(a, b, d));
     let (o3, o4) = (orient2d(c, d, a), orient2d(c, d, b));
     o1 != Collinear && o2 != Collinear && o1 != o2 && o3 != Collinear && o4 != Collinear && o3 != o4
@@ -1009,20 +1033,38 @@ pub(crate) fn crosses(a: Point, b: Point, c: Point, d: Point) -> bool {
 /// side of it.
 fn crossing_past(e: Point, f: Point, o: Point, q: Point) -> i32 {
     let above = |p: Point| p.y > o.y || (p.y == o.y && q.y < o.y);
+    let (ae, af) = (above(e), above(f));
+    if ae == af {
+        // the edge stays on one side of the ray's line
+        return 0;
+    }
     let side = match orient2d(e, f, o) {
         Orientation::Collinear => orient2d(e, f, q),
         side => side,
     };
-    match (above(e), above(f), side) {
+    match (ae, af, side) {
         (false, true, Orientation::CounterClockwise) => 1,
         (true, false, Orientation::Clockwise) => -1,
         _ => 0,
     }
 }
 
+/// Whether the bounding boxes of segments a–b and c–d are disjoint (comparisons only,
+/// exact): then the segments have no point in common, and no predicate is needed.
+#[inline]
+fn boxes_apart(a: Point, b: Point, c: Point, d: Point) -> bool {
+    a.x.max(b.x) < c.x.min(d.x)
+        || c.x.max(d.x) < a.x.min(b.x)
+        || a.y.max(b.y) < c.y.min(d.y)
+        || c.y.max(d.y) < a.y.min(b.y)
+}
+
 /// Whether closed segments a–b and c–d have a point in common.
 fn segments_meet(a: Point, b: Point, c: Point, d: Point) -> bool {
     use Orientation::*;
+    if boxes_apart(a, b, c, d) {
+        return false;
+    }
     let (o1, o2) = (orient2d(a, b, c), orient2d(a, b, d));
     let (o3, o4) = (orient2d(c, d, a), orient2d(c, d, b));
     if o1 != o2

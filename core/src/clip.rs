@@ -41,10 +41,6 @@ const PLANTED_BUG: bool = cfg!(feature = "planted-bug");
 /// building the grid pays (earcut's threshold is 80 vertices in all).
 const GRID_MIN_REFLEX: usize = 32;
 
-/// Polygons with at least this many reflex vertices (and fewer than `GRID_MIN_REFLEX`)
-/// sort them by x, so that an ear test scans only those within its box's x range.
-const SORT_MIN_REFLEX: usize = 8;
-
 /// The fast walk steps over marked tips one by one until it has taken this many steps per
 /// node of the ring (plus `WALK_STEPS_MIN`); then it keeps the tips in `ClipScratch::tips`
 /// and jumps over marked ones, to the same tip. Most rings never get there, and the
@@ -150,8 +146,6 @@ struct Clipper<'a> {
     no_fan: bool,
     /// Ear tests ask `cx.clip.cells` for candidates rather than scanning `cx.clip.reflex`.
     indexed: bool,
-    /// `cx.clip.reflex` is sorted by x (see `SORT_MIN_REFLEX`).
-    sorted: bool,
     /// Lenient mode with crossing edges: ears using a crossed edge wait until nothing else
     /// can be cut, so that overlaps stay where the input crosses itself.
     avoid_crossed: bool,
@@ -230,12 +224,6 @@ impl<'a> Clipper<'a> {
             let (pool, clip) = (&cx.pool, &mut cx.clip);
             clip.cells.build(&clip.reflex, pool.len());
         }
-        let sorted = !indexed && reflex_count >= SORT_MIN_REFLEX;
-        if sorted {
-            cx.clip
-                .reflex
-                .sort_unstable_by(|a, b| a.1.x.total_cmp(&b.1.x));
-        }
         (
             Clipper {
                 cx,
@@ -244,7 +232,6 @@ impl<'a> Clipper<'a> {
                 reflex_count,
                 no_fan: false,
                 indexed,
-                sorted,
                 avoid_crossed,
                 epoch: 0,
                 walking: false,
@@ -549,13 +536,6 @@ impl<'a> Clipper<'a> {
                 let q = pool.p(r);
                 near(q) && live(r) && test(r, q)
             })
-        } else if self.sorted {
-            // only the run within the box's x range
-            let reflex = &self.cx.clip.reflex;
-            let from = reflex.partition_point(|&(_, q)| q.x < lo.x);
-            (reflex[from..].iter())
-                .take_while(|&&(_, q)| q.x <= hi.x)
-                .any(|&(r, q)| near(q) && live(r) && test(r, q))
         } else {
             // positions are listed with the nodes: most fail the box test without a look
             // at the node
@@ -703,7 +683,6 @@ impl<'a> Clipper<'a> {
                 self.reflex_count += 1;
                 let p = self.cx.pool.p(n);
                 self.cx.clip.reflex.push((n, p));
-                self.sorted = false;
                 if self.indexed {
                     self.cx.clip.cells.add(n);
                 }

@@ -45,11 +45,9 @@ const GRID_MIN_REFLEX: usize = 32;
 /// node of the ring (plus `WALK_STEPS_MIN`); then it keeps the tips in `ClipScratch::tips`
 /// and jumps over marked ones, to the same tip. Most rings never get there, and the
 /// bookkeeping would cost them more than it saves; a ring whose ears all lie behind the
-/// walk (a comb's spine, fanned from a corner: a lap per cut) gets there after a few laps,
-/// and so does a large ring of mostly reflex nodes (a rectangle with many round holes).
-/// Small rings (glyphs) stay under `WALK_STEPS_MIN`.
-const WALK_STEPS_PER_NODE: usize = 2;
-const WALK_STEPS_MIN: usize = 4096;
+/// walk (a comb's spine, fanned from a corner: a lap per cut) gets there after a few laps.
+const WALK_STEPS_PER_NODE: usize = 16;
+const WALK_STEPS_MIN: usize = 256;
 
 /// Reusable buffers of the clip stage.
 #[derive(Debug, Default)]

@@ -88,6 +88,31 @@ fn inputs() -> Vec<(String, Flat, Nesting)> {
         let rings = rings_from_json(&read_json(&format!("cases/{name}.json"))["rings"]);
         v.push((name.to_string(), flatten(&rings), Nesting::Auto));
     }
+    // two figure eights sharing a lobe (raw_rings seed 41): lenient mode cuts both into
+    // lobes and nests those, in both conventions
+    let eights = vec![
+        vec![
+            [11.0, 11.0],
+            [-3.0, 0.0],
+            [0.0, 0.0],
+            [5.0, -12.0],
+            [-12.0, -12.0],
+        ],
+        vec![
+            [-12.0, -12.0],
+            [11.0, 11.0],
+            [-3.0, 0.0],
+            [0.0, 0.0],
+            [-4.0, -8.0],
+        ],
+    ];
+    for nesting in [Nesting::Auto, Nesting::FirstIsOuter] {
+        v.push((
+            format!("figure eights {nesting:?}"),
+            flatten(&eights),
+            nesting,
+        ));
+    }
     // a star: the sweep line crosses thousands of spikes, so the check's status is chunked
     let mut seed = 12345u64;
     let star: Vec<[f64; 2]> = (0..4000)

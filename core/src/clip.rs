@@ -764,18 +764,9 @@ impl<'a> Clipper<'a> {
     /// best triangle it can. Returns a live node to go on from (`len` is 0 when done).
     fn stuck(&mut self, at: NodeId) -> Result<NodeId, Error> {
         let at = self.live(at);
-        // the first convex corner from `at` (the ring is unchanged until the forced ear
-        // below, unless a repair returns first)
-        let convex_after = |cx: &Context, len: usize, mut n: NodeId| {
-            for _ in 0..len {
-                if turn(cx, n) == Orientation::CounterClockwise {
-                    return Some(n);
-                }
-                n = cx.pool.next(n);
-            }
-            None
-        };
-        let Some(convex) = convex_after(self.cx, self.len, at) else {
+        let convex = |c: &Self, n| turn(c.cx, n) == Orientation::CounterClockwise;
+        // (the ring is unchanged until the forced ear below, unless a repair returns first)
+        let Some(first_convex) = self.first_until_lap(at, at, convex) else {
             // all straight or reflex: no area left (a counter-clockwise ring with area has
             // a left turn), so this piece is done — unless it turns right somewhere: then
             // it is a lobe winding against the rest of its ring, which strict mode refuses
@@ -809,21 +800,34 @@ impl<'a> Clipper<'a> {
             return Ok(at);
         }
         // the first convex corner with no vertex inside, else the first convex one
-        let mut relaxed = None;
-        let mut n = convex;
+        let tip = self
+            .first_until_lap(first_convex, at, |c, n| {
+                convex(c, n) && !c.has_vertex_inside(n)
+            })
+            .unwrap_or(first_convex);
+        self.note(RepairKind::ForcedEar, tip);
+        Ok(self.cut(tip))
+    }
+
+    /// The first node from `from` on, before the walk comes round to `at`, that passes
+    /// `test`.
+    fn first_until_lap(
+        &self,
+        from: NodeId,
+        at: NodeId,
+        test: impl Fn(&Self, NodeId) -> bool,
+    ) -> Option<NodeId> {
+        let mut n = from;
         for _ in 0..self.len {
-            if turn(self.cx, n) == Orientation::CounterClockwise && !self.has_vertex_inside(n) {
-                relaxed = Some(n);
-                break;
+            if test(self, n) {
+                return Some(n);
             }
             n = self.cx.pool.next(n);
             if n == at {
                 break;
             }
         }
-        let tip = relaxed.unwrap_or(convex);
-        self.note(RepairKind::ForcedEar, tip);
-        Ok(self.cut(tip))
+        None
     }
 
     /// Records a lenient repair at node `n`.
@@ -846,10 +850,8 @@ impl<'a> Clipper<'a> {
             if self.len <= 3 {
                 break;
             }
-            if self.local_crossing_at(p) {
+            if let Some((a, q, b)) = self.local_crossing_at(p) {
                 let pool = &self.cx.pool;
-                let (a, q) = (pool.prev(p), pool.next(p));
-                let b = pool.next(q);
                 match orient2d(pool.p(a), pool.p(p), pool.p(b)) {
                     Orientation::CounterClockwise => self.emit(a, p, b),
                     Orientation::Clockwise => self.emit(a, b, p),
@@ -868,14 +870,16 @@ impl<'a> Clipper<'a> {
         cured
     }
 
-    /// Whether edge prev(p) → p crosses edge next(p) → next(next(p)) where each end sees
-    /// the other (what [`Clipper::cure_local_intersections`] cures at p).
-    fn local_crossing_at(&self, p: NodeId) -> bool {
+    /// (a, q, b) = (prev(p), next(p), next(next(p))) where edge a → p crosses edge q → b
+    /// and each end sees the other (what [`Clipper::cure_local_intersections`] cures at p).
+    fn local_crossing_at(&self, p: NodeId) -> Option<(NodeId, NodeId, NodeId)> {
         let pool = &self.cx.pool;
         let (a, q) = (pool.prev(p), pool.next(p));
         let b = pool.next(q);
         let (pa, pp, pq, pb) = (pool.p(a), pool.p(p), pool.p(q), pool.p(b));
-        pa != pb && crosses(pa, pp, pq, pb) && sees(pool, a, pb) && sees(pool, b, pa)
+        let crossing =
+            pa != pb && crosses(pa, pp, pq, pb) && sees(pool, a, pb) && sees(pool, b, pa);
+        crossing.then_some((a, q, b))
     }
 
     /// earcut's `splitEarcut`: find a diagonal a–b that crosses no edge and leaves both

@@ -256,7 +256,7 @@ mod tests {
             [-4.0, 1.0],
             [-4.0, -1.0],
         ];
-        let mut cx = crate::triangulator::Context::default();
+        let mut cx = Context::default();
         crate::load::load(&mut cx, &petals, &[0]).unwrap();
         assert!(crate::clean::clean(&mut cx, false).unwrap());
         assert_eq!(cx.rings.iter().filter(|r| r.alive).count(), 1);

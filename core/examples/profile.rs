@@ -1,5 +1,5 @@
 //! Runs polytri on one rings or shapes JSON file many times, for a profiler:
-//! `cargo run --release -p polytri --example profile -- FILE [RUNS] [fast|lenient|quality]`.
+//! `cargo run --release -p polytri --example profile -- FILE [RUNS] [fast|lenient|quality|check]`.
 //! Shapes go one polygon at a time (first ring outer), as `polytri bench` gives them.
 
 use polytri::{Nesting, Options, Strategy, Triangulator};
@@ -10,7 +10,7 @@ fn main() {
     let args: Vec<String> = std::env::args().collect();
     let path = args
         .get(1)
-        .expect("usage: profile FILE [RUNS] [fast|lenient|quality]");
+        .expect("usage: profile FILE [RUNS] [fast|lenient|quality|check]");
     let runs: usize = args.get(2).map_or(100, |r| r.parse().expect("RUNS"));
     let mode = args.get(3).map_or("lenient", String::as_str);
     let text = std::fs::read_to_string(path).expect("readable file");
@@ -36,7 +36,7 @@ fn main() {
     let options = match mode {
         "fast" => options,
         "lenient" => options.with_lenient(true),
-        "quality" => options.with_strategy(Strategy::Quality),
+        "quality" | "check" => options.with_strategy(Strategy::Quality),
         other => panic!("unknown mode {other}"),
     };
     let mut tri = Triangulator::<f64>::new();
@@ -45,6 +45,11 @@ fn main() {
     let began = std::time::Instant::now();
     for _ in 0..runs {
         for (vertices, starts) in &flat {
+            if mode == "check" {
+                triangles +=
+                    usize::from(tri.check(vertices, starts, Nesting::FirstIsOuter).is_ok());
+                continue;
+            }
             triangles += tri
                 .triangulate(vertices, starts, &options, &mut out)
                 .map_or(0, |r| r.triangles);

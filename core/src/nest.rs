@@ -414,19 +414,46 @@ fn depth_from_nearest(cx: &Context, b: usize, pv: Point) -> Option<u32> {
             break;
         }
     }
-    let Some(hit) = near.best else {
-        let nothing = near.touch_x.is_infinite() && !near.through_origin;
-        return nothing.then_some(0);
-    };
     let touch = Point::new(near.touch_x, pv.y);
-    // a point where an edge meets the ray's line at an endpoint, as near as the hit or
-    // nearer: not decided here
-    let touch_nearer =
-        near.touch_x.is_finite() && orient2d(hit.lo, hit.hi, touch) != Orientation::Clockwise;
-    if near.tie || near.through_origin || touch_nearer || !cx.depth_known[hit.ring] {
+    let Some(hit) = near.best else {
+        if near.touch_x.is_infinite() {
+            return (!near.through_origin).then_some(0);
+        }
+        return depth_from_vertex(cx, &near, pv, touch);
+    };
+    if near.tie || near.through_origin || !cx.depth_known[hit.ring] {
         return None;
     }
+    if near.touch_x.is_finite() {
+        // a point where an edge meets the ray's line at an endpoint, as near as the hit or
+        // nearer: the vertex there decides, if it is nearer and alone
+        return match orient2d(hit.lo, hit.hi, touch) {
+            Orientation::CounterClockwise => depth_from_vertex(cx, &near, pv, touch),
+            _ => None,
+        };
+    }
     Some(cx.rings[hit.ring].depth + u32::from(hit.upward))
+}
+
+/// The depth of ring `b` when the nearest thing the ray from `pv` meets is a vertex W at
+/// `touch`, of ring R: `pv` lies in the region just west of W, which is inside R exactly
+/// when that direction lies inside W's corner (R is counter-clockwise here). `None` when
+/// that is not decisive: several nodes at `touch`, an edge along the ray, the ray through
+/// the origin, or R's depth not known yet.
+fn depth_from_vertex(cx: &Context, near: &Nearest, pv: Point, touch: Point) -> Option<u32> {
+    let w = near
+        .touch_node
+        .filter(|_| !near.touch_shared && !near.through_origin)?;
+    let ring = cx.pool.get(w).ring as usize;
+    if touch.x <= pv.x || !cx.depth_known[ring] {
+        return None;
+    }
+    let (next, prev) = (cx.pool.p(cx.pool.next(w)), cx.pool.p(cx.pool.prev(w)));
+    if next == touch || prev == touch {
+        return None;
+    }
+    let inside = corner_contains(touch, next, prev, pv)?;
+    Some(cx.rings[ring].depth + u32::from(inside))
 }
 
 /// The nearest edge met by a ray towards +x, as [`depth_from_nearest`] collects it.
@@ -439,6 +466,10 @@ struct Nearest {
     /// The smallest x (at or right of the ray's origin) where an edge meets the ray's line
     /// at an endpoint or runs along it; infinity when none does.
     touch_x: f64,
+    /// The node at (`touch_x`, the ray's y), and whether another node lies there too or an
+    /// edge there runs along the ray's line.
+    touch_node: Option<NodeId>,
+    touch_shared: bool,
 }
 
 /// An edge crossing the ray's line strictly between its endpoints `lo` (below) and `hi`.
@@ -459,6 +490,8 @@ impl Default for Nearest {
             tie: false,
             through_origin: false,
             touch_x: f64::INFINITY,
+            touch_node: None,
+            touch_shared: false,
         }
     }
 }
@@ -478,9 +511,17 @@ impl Nearest {
             return;
         }
         if lo.y == pv.y || hi.y == pv.y {
-            for e in [lo, hi] {
-                if e.y == pv.y && e.x >= pv.x {
-                    self.touch_x = self.touch_x.min(e.x);
+            let along = lo.y == hi.y;
+            for (e, at) in [(p, n), (q, node.next)] {
+                if e.y != pv.y || e.x < pv.x || e.x > self.touch_x {
+                    continue;
+                }
+                if e.x < self.touch_x {
+                    self.touch_x = e.x;
+                    self.touch_node = Some(at);
+                    self.touch_shared = along;
+                } else {
+                    self.touch_shared |= along || self.touch_node != Some(at);
                 }
             }
             return;

@@ -197,7 +197,7 @@ fn scan(
         sort_by_left(&mut scratch.boxes, &mut scratch.merged, &mut scratch.runs);
         scan_sorted(&scratch.boxes, budget, visit)
     } else if collect_chains(pool, &scratch.boxes, &mut scratch.chains) {
-        scan_chains(&scratch.boxes, &mut scratch.chains, budget, visit)
+        scan_chains(scratch, budget, visit)
     } else {
         scan_grid(scratch, budget, visit)
     }
@@ -257,16 +257,23 @@ fn collect_chains(pool: &Pool, boxes: &[EdgeBox], chains: &mut Vec<Chain>) -> bo
     true
 }
 
-/// Few chains: sort them by their left sides; compare each chain's neighbouring edges, and
-/// each pair of chains whose boxes overlap edge by edge, walking both from left to right
-/// (the edges of a chain, in x order, cover its x range one after another, so the edges
-/// of one chain meeting an edge of the other form a window that only moves right).
+/// Few chains: compare each chain's neighbouring edges, and each pair of chains whose
+/// boxes overlap (found with a grid, see [`overlapping_pairs`]) edge by edge, walking both
+/// from left to right (the edges of a chain, in x order, cover its x range one after
+/// another, so the edges of one chain meeting an edge of the other form a window that only
+/// moves right).
 fn scan_chains(
-    boxes: &[EdgeBox],
-    chains: &mut [Chain],
+    scratch: &mut PruneScratch,
     mut budget: usize,
     mut visit: impl FnMut(&EdgeBox, &EdgeBox) -> bool,
 ) -> Scan {
+    let PruneScratch {
+        boxes,
+        chains,
+        start,
+        entries,
+        ..
+    } = scratch;
     // the k-th edge of a chain from the left
     let edge = |c: &Chain, k: u32| {
         let i = if c.falling {
@@ -276,15 +283,11 @@ fn scan_chains(
         };
         &boxes[i as usize]
     };
-    let mut spend = |n: usize| {
-        let ok = budget >= n;
-        budget = budget.saturating_sub(n);
-        ok
-    };
     for c in chains.iter() {
-        if !spend(c.len as usize) {
+        if budget < c.len as usize {
             return Scan::OutOfBudget;
         }
+        budget -= c.len as usize;
         for k in 1..c.len {
             let (e, f) = (edge(c, k - 1), edge(c, k));
             if visit(e, f) {
@@ -299,59 +302,50 @@ fn scan_chains(
             }
         }
     }
-    chains.sort_unstable_by(|s, t| s.x0.total_cmp(&t.x0));
-    for (i, a) in chains.iter().enumerate() {
-        for b in &chains[i + 1..] {
-            if b.x0 > a.x1 {
-                break;
-            }
-            if !spend(1) {
-                return Scan::OutOfBudget;
-            }
-            if b.y0 > a.y1 || a.y0 > b.y1 {
-                continue;
-            }
-            // a's edges from the first reaching b; b's edges from `first` on are those
-            // not ending left of a's current edge
-            let reaching = |c: &Chain, x: f64| {
-                let (mut lo, mut hi) = (0, c.len);
-                while lo < hi {
-                    let mid = lo + (hi - lo) / 2;
-                    if edge(c, mid).x1 < x {
-                        lo = mid + 1;
-                    } else {
-                        hi = mid;
-                    }
-                }
-                lo
-            };
-            let mut first = reaching(b, a.x0.max(b.x0));
-            for k in reaching(a, b.x0)..a.len {
-                let e = edge(a, k);
-                if e.x0 > b.x1 {
-                    break;
-                }
-                while first < b.len && edge(b, first).x1 < e.x0 {
-                    first += 1;
-                }
-                let mut m = first;
-                while m < b.len {
-                    let f = edge(b, m);
-                    if f.x0 > e.x1 {
-                        break;
-                    }
-                    if !spend(1) {
-                        return Scan::OutOfBudget;
-                    }
-                    if f.y0 <= e.y1 && e.y0 <= f.y1 && visit(e, f) {
-                        return Scan::Stopped;
-                    }
-                    m += 1;
-                }
+    // the edges of `c` from the first one not ending left of x
+    let reaching = |c: &Chain, x: f64| {
+        let (mut lo, mut hi) = (0, c.len);
+        while lo < hi {
+            let mid = lo + (hi - lo) / 2;
+            if edge(c, mid).x1 < x {
+                lo = mid + 1;
+            } else {
+                hi = mid;
             }
         }
-    }
-    Scan::Done
+        lo
+    };
+    overlapping_pairs(chains, start, entries, &mut budget, |a, b, budget| {
+        let (a, b) = if a.x0 <= b.x0 { (a, b) } else { (b, a) };
+        // a's edges from the first reaching b; b's edges from `first` on are those not
+        // ending left of a's current edge
+        let mut first = reaching(b, a.x0.max(b.x0));
+        for k in reaching(a, b.x0)..a.len {
+            let e = edge(a, k);
+            if e.x0 > b.x1 {
+                break;
+            }
+            while first < b.len && edge(b, first).x1 < e.x0 {
+                first += 1;
+            }
+            let mut m = first;
+            while m < b.len {
+                let f = edge(b, m);
+                if f.x0 > e.x1 {
+                    break;
+                }
+                if *budget == 0 {
+                    return Scan::OutOfBudget;
+                }
+                *budget -= 1;
+                if f.y0 <= e.y1 && e.y0 <= f.y1 && visit(e, f) {
+                    return Scan::Stopped;
+                }
+                m += 1;
+            }
+        }
+        Scan::Done
+    })
 }
 
 /// Sorts boxes by their left sides: a natural merge sort, since in ring order the left
@@ -453,9 +447,8 @@ fn scan_sorted(
     Scan::Done
 }
 
-/// Many edges: list each in the cells of a uniform grid its box covers (about two edges
-/// per cell) and compare the edges sharing a cell. Two edges whose boxes overlap share
-/// the cell of a point of the overlap, since cells are monotone in x and y.
+/// Many edges: compare the pairs whose boxes overlap, found with a grid (see
+/// [`overlapping_pairs`]).
 fn scan_grid(
     scratch: &mut PruneScratch,
     mut budget: usize,
@@ -467,27 +460,74 @@ fn scan_grid(
         entries,
         ..
     } = scratch;
+    overlapping_pairs(boxes, start, entries, &mut budget, |e, f, _| {
+        if visit(e, f) {
+            Scan::Stopped
+        } else {
+            Scan::Done
+        }
+    })
+}
+
+/// An axis-aligned box, as [`overlapping_pairs`] takes them.
+trait Bounds {
+    /// Left, right, bottom, top.
+    fn bounds(&self) -> (f64, f64, f64, f64);
+}
+
+impl Bounds for EdgeBox {
+    #[inline]
+    fn bounds(&self) -> (f64, f64, f64, f64) {
+        (self.x0, self.x1, self.y0, self.y1)
+    }
+}
+
+impl Bounds for Chain {
+    #[inline]
+    fn bounds(&self) -> (f64, f64, f64, f64) {
+        (self.x0, self.x1, self.y0, self.y1)
+    }
+}
+
+/// Calls `visit` once for each pair of `items` whose (closed) boxes overlap, until it
+/// returns anything but [`Scan::Done`], which is then returned. Each item is listed in the
+/// cells of a uniform grid its box covers (about two items per cell), and the items sharing
+/// a cell are compared: two overlapping boxes share the cell of the lower left corner of
+/// their overlap (cells are monotone in x and y), and only that cell visits them. Listing a
+/// cell and comparing a pair each cost one unit of `budget`, which `visit` may spend too;
+/// when it runs out the scan gives up. `start` and `entries` are scratch.
+fn overlapping_pairs<B: Bounds>(
+    items: &[B],
+    start: &mut Vec<u32>,
+    entries: &mut Vec<u32>,
+    budget: &mut usize,
+    mut visit: impl FnMut(&B, &B, &mut usize) -> Scan,
+) -> Scan {
     let (mut x0, mut y0, mut x1, mut y1) = (f64::MAX, f64::MAX, f64::MIN, f64::MIN);
-    for b in boxes.iter() {
-        (x0, y0, x1, y1) = (x0.min(b.x0), y0.min(b.y0), x1.max(b.x1), y1.max(b.y1));
+    for b in items {
+        let (l, r, d, u) = b.bounds();
+        (x0, y0, x1, y1) = (x0.min(l), y0.min(d), x1.max(r), y1.max(u));
     }
     let (w, h) = (x1 - x0, y1 - y0);
-    let (nx, ny) = shape((boxes.len() / 2).max(1), w, h);
+    let (nx, ny) = shape((items.len() / 2).max(1), w, h);
     let (sx, sy) = (scale(nx, w), scale(ny, h));
     // `as` saturates: NaN and negative become 0
     let column = |x: f64| (((x - x0) * sx) as usize).min(nx - 1);
     let row = |y: f64| (((y - y0) * sy) as usize).min(ny - 1);
-    let cells_of = |b: &EdgeBox| (column(b.x0), column(b.x1), row(b.y0), row(b.y1));
-    // counting sort of (cell, edge) entries; give up when long edges would list too many
+    let cells_of = |b: &B| {
+        let (l, r, d, u) = b.bounds();
+        (column(l), column(r), row(d), row(u))
+    };
+    // counting sort of (cell, item) entries; give up when long items would list too many
     start.clear();
     start.resize(nx * ny + 2, 0);
-    for b in boxes.iter() {
+    for b in items {
         let (c0, c1, r0, r1) = cells_of(b);
         let listed = (c1 - c0 + 1) * (r1 - r0 + 1);
-        if listed > budget {
+        if listed > *budget {
             return Scan::OutOfBudget;
         }
-        budget -= listed;
+        *budget -= listed;
         for r in r0..=r1 {
             for c in c0..=c1 {
                 start[r * nx + c + 2] += 1;
@@ -499,7 +539,7 @@ fn scan_grid(
     }
     entries.clear();
     entries.resize(start[nx * ny + 1] as usize, 0);
-    for (i, b) in boxes.iter().enumerate() {
+    for (i, b) in items.iter().enumerate() {
         let (c0, c1, r0, r1) = cells_of(b);
         for r in r0..=r1 {
             for c in c0..=c1 {
@@ -513,16 +553,26 @@ fn scan_grid(
     for c in 0..nx * ny {
         let cell = &entries[start[c] as usize..start[c + 1] as usize];
         for (k, &i) in cell.iter().enumerate() {
-            let e = &boxes[i as usize];
+            let e = &items[i as usize];
+            let (el, er, ed, eu) = e.bounds();
             for &j in &cell[k + 1..] {
-                if budget == 0 {
+                if *budget == 0 {
                     return Scan::OutOfBudget;
                 }
-                budget -= 1;
-                let f = &boxes[j as usize];
-                let overlap = f.x0 <= e.x1 && e.x0 <= f.x1 && f.y0 <= e.y1 && e.y0 <= f.y1;
-                if overlap && visit(e, f) {
-                    return Scan::Stopped;
+                *budget -= 1;
+                let f = &items[j as usize];
+                let (fl, fr, fd, fu) = f.bounds();
+                if fl > er || el > fr || fd > eu || ed > fu {
+                    continue;
+                }
+                // the overlap's lower left corner lies in this cell only
+                let corner = row(ed.max(fd)) * nx + column(el.max(fl));
+                if corner != c {
+                    continue;
+                }
+                match visit(e, f, budget) {
+                    Scan::Done => {}
+                    other => return other,
                 }
             }
         }

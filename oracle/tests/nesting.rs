@@ -181,6 +181,41 @@ fn configurations() -> Vec<(String, Vec<Ring>)> {
         vec![wedge.clone(), lobes.clone()],
     ));
     out.push(("wedge and lobes".into(), vec![lobes, wedge]));
+    // The ray from a ring's rightmost vertex running exactly through another ring's vertex
+    // (a grid of round holes does this at every hole): the vertex's corner decides
+    let diamond =
+        |cx: f64, cy: f64, r: f64| vec![[cx + r, cy], [cx, cy + r], [cx - r, cy], [cx, cy - r]];
+    let frame = vec![[0.0, 0.0], [16.0, 0.0], [16.0, 12.0], [0.0, 12.0]];
+    out.push((
+        "a hole whose ray meets the next hole's vertex".into(),
+        vec![
+            frame.clone(),
+            diamond(3.0, 6.0, 2.0),
+            diamond(8.0, 6.0, 2.0),
+        ],
+    ));
+    out.push((
+        "a hole whose ray meets the outer ring's vertex".into(),
+        vec![diamond(8.0, 6.0, 6.0), diamond(7.0, 6.0, 2.0)],
+    ));
+    // the outer ring's reflex vertex (8, 6), pointing west, and one pointing east at (12, 6)
+    let notched = vec![
+        [0.0, 0.0],
+        [16.0, 0.0],
+        [16.0, 12.0],
+        [12.0, 6.0],
+        [14.0, 12.0],
+        [0.0, 12.0],
+        [8.0, 6.0],
+    ];
+    out.push((
+        "holes whose rays meet reflex vertices of the outer ring".into(),
+        vec![notched, diamond(4.0, 6.0, 1.0), diamond(10.0, 6.0, 1.0)],
+    ));
+    out.push((
+        "an island whose ray meets its hole's vertex".into(),
+        vec![frame, diamond(8.0, 6.0, 5.0), diamond(7.0, 6.0, 2.0)],
+    ));
     out
 }
 

@@ -64,6 +64,10 @@ pub(crate) struct ClipScratch {
     heap: EarQueue,
     /// Rings still to clip: pieces of a polygon split by a diagonal (lenient fallback).
     pending: Vec<NodeId>,
+    /// Scratch of [`lay_out`]: new node ids by old, the polygons' starts, the node buffer.
+    renamed: Vec<u32>,
+    starts: Vec<NodeId>,
+    spare: Vec<crate::pool::Node>,
     /// Edge tests the lenient split search may still spend in this `clip` call. One budget
     /// for the whole call, not one per split: on garbage input every stuck piece tries a
     /// split, and a per-split budget multiplied by the number of pieces is unbounded in
@@ -172,6 +176,9 @@ pub(crate) fn clip(
 ) -> Result<usize, Error> {
     let mut polygons = 0;
     cx.clip.split_budget = SPLIT_BUDGET;
+    if strategy == Strategy::Fast && cx.pool.len() >= LAY_OUT_MIN {
+        lay_out(cx);
+    }
     for r in 0..cx.rings.len() {
         let ring = cx.rings[r];
         if !ring.alive || !ring.merged || ring.component != r as u32 {
@@ -189,6 +196,34 @@ pub(crate) fn clip(
         }
     }
     Ok(polygons)
+}
+
+/// From this many nodes on, the fast strategy first lays the pool out in ring order: its
+/// walk laps the ring several times, and in a pool larger than the caches each step to a
+/// node elsewhere in memory waits for it. (The quality strategy breaks ties between equal
+/// angles by node id, so its nodes stay where they are.)
+const LAY_OUT_MIN: usize = 1 << 14;
+
+/// Renumbers the nodes so that each polygon's ring runs through consecutive ids (see
+/// [`crate::pool::Pool::lay_out`]), and the ring table with them.
+fn lay_out(cx: &mut Context) {
+    let clip = &mut cx.clip;
+    clip.starts.clear();
+    clip.starts.extend(
+        (cx.rings.iter().enumerate())
+            .filter(|&(r, ring)| ring.alive && ring.merged && ring.component == r as u32)
+            .map(|(_, ring)| ring.start),
+    );
+    cx.pool
+        .lay_out(&mut clip.starts, &mut clip.renamed, &mut clip.spare);
+    let renamed = &clip.renamed;
+    for ring in &mut cx.rings {
+        for n in [&mut ring.start, &mut ring.rightmost] {
+            if let Some(&id) = renamed.get(n.idx()) {
+                *n = NodeId(id);
+            }
+        }
+    }
 }
 
 impl<'a> Clipper<'a> {

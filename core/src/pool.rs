@@ -153,6 +153,52 @@ impl Pool {
         self.nodes[last as usize].next = NodeId(first);
     }
 
+    /// Lays the nodes out again in the order the rings through `starts` visit them, each
+    /// ring from its start, then every other node in pool order; `starts` and `renamed`
+    /// (each node's new id by old id, as scratch) follow. Links, flags and positions move
+    /// with the nodes. A walk along a ring then reads memory in order, which matters once
+    /// the pool outgrows the caches.
+    pub fn lay_out(
+        &mut self,
+        starts: &mut [NodeId],
+        renamed: &mut Vec<u32>,
+        spare: &mut Vec<Node>,
+    ) {
+        const UNSET: u32 = u32::MAX;
+        renamed.clear();
+        renamed.resize(self.nodes.len(), UNSET);
+        spare.clear();
+        for &start in starts.iter() {
+            let mut n = start;
+            // bounded, in case a start was unlinked
+            for _ in 0..self.nodes.len() {
+                let Some(id) = renamed.get_mut(n.idx()) else {
+                    break;
+                };
+                if *id != UNSET {
+                    break;
+                }
+                *id = spare.len() as u32;
+                spare.push(self.nodes[n.idx()]);
+                n = self.nodes[n.idx()].next;
+            }
+        }
+        for (node, id) in self.nodes.iter().zip(renamed.iter_mut()) {
+            if *id == UNSET {
+                *id = spare.len() as u32;
+                spare.push(*node);
+            }
+        }
+        let rename = |n: NodeId| NodeId(renamed[n.idx()]);
+        for node in spare.iter_mut() {
+            (node.prev, node.next) = (rename(node.prev), rename(node.next));
+        }
+        for start in starts.iter_mut() {
+            *start = rename(*start);
+        }
+        core::mem::swap(&mut self.nodes, spare);
+    }
+
     /// Unlinks `n` from its ring; its neighbours become adjacent and may be ears again.
     pub fn remove(&mut self, n: NodeId) {
         let (prev, next) = (self.prev(n), self.next(n));
@@ -296,6 +342,42 @@ mod tests {
 
     fn vertices(pool: &Pool, start: NodeId) -> Vec<u32> {
         pool.ring(start).map(|n| pool.get(n).vertex).collect()
+    }
+
+    #[test]
+    fn lay_out_puts_rings_in_walk_order() {
+        let (mut pool, mut starts) = Pool::from_rings(&[
+            vec![(0., 0.), (4., 0.), (4., 4.), (0., 4.)],
+            vec![(1., 1.), (2., 1.), (2., 2.)],
+            vec![(3., 3.), (3.5, 3.), (3.5, 3.5)],
+        ]);
+        // the first ring visited out of pool order, with a node removed; the second ring
+        // is not listed (it keeps its nodes, after the listed rings')
+        pool.remove(NodeId(1));
+        pool.reverse(starts[0]);
+        let listed = [starts[2], starts[0]];
+        let before: Vec<Vec<u32>> = listed.iter().map(|&s| vertices(&pool, s)).collect();
+        let mut laid = listed;
+        let (mut renamed, mut spare) = (Vec::new(), Vec::new());
+        pool.lay_out(&mut laid, &mut renamed, &mut spare);
+        let after: Vec<Vec<u32>> = laid.iter().map(|&s| vertices(&pool, s)).collect();
+        assert_eq!(after, before);
+        // consecutive ids along each ring, the listed rings first
+        let ids: Vec<u32> = laid
+            .iter()
+            .flat_map(|&s| pool.ring(s).map(|n| n.0))
+            .collect();
+        assert_eq!(ids, (0..6).collect::<Vec<u32>>());
+        // every node is still there, links consistent, the removed one still removed
+        assert_eq!(pool.len(), 10);
+        for (i, node) in pool.nodes.iter().enumerate() {
+            if !node.removed {
+                assert_eq!(pool.get(node.next).prev, NodeId(i as u32));
+            }
+        }
+        assert!(pool.get(NodeId(renamed[1])).removed);
+        starts[1] = NodeId(renamed[starts[1].idx()]);
+        assert_eq!(vertices(&pool, starts[1]), [0, 1, 2]);
     }
 
     #[test]

@@ -126,6 +126,17 @@ fn inputs() -> Vec<(String, Flat, Nesting)> {
         })
         .collect();
     v.push(("star".to_string(), flatten(&[star]), Nesting::FirstIsOuter));
+    // a comb of more than 2^14 vertices: the fast strategy lays its nodes out in ring order
+    // first, and its walk jumps over the teeth
+    let teeth = 4200;
+    let mut comb: Vec<[f64; 2]> = (0..teeth)
+        .flat_map(|t| {
+            let x = 2.0 * t as f64;
+            [[x, 1.0], [x, 10.0], [x + 1.0, 10.0], [x + 1.0, 1.0]]
+        })
+        .collect();
+    comb.extend([[2.0 * teeth as f64 - 1.0, 0.0], [0.0, 0.0]]);
+    v.push(("comb".to_string(), flatten(&[comb]), Nesting::FirstIsOuter));
     v
 }
 

@@ -394,9 +394,6 @@ fn collect_shared(cx: &mut Context, first_split: usize) {
     cx.shared
         .sort_unstable_by(|&a, &b| cmp_xy(pool.p(a), pool.p(b)).then(a.cmp(&b)));
     cx.shared.dedup();
-    for &n in &cx.shared {
-        cx.pool.get_mut(n).shared = true;
-    }
 }
 
 /// Finds ring `r`'s rightmost vertex and makes the ring counter-clockwise.

@@ -16,8 +16,9 @@
 //! `Strategy::Fast` walks the ring (paper §3.3): a tip that failed is marked "not an ear"
 //! until a neighbour changes, and once at most one reflex vertex is left the rest is a fan
 //! from it. `Strategy::Quality` always cuts the ear with the smallest angle at its tip (Mei
-//! et al.), from a priority queue; an ear's status changes only when a neighbour is cut, so
-//! only the two neighbours are re-examined.
+//! et al.), from a priority queue of convex tips: a cut changes the angles of its two
+//! neighbours only, so only they are queued again, and a tip gets its ear test when it
+//! comes up (most queued tips are touched again before that, and skipped).
 //!
 //! A ring with no ear left is not a valid polygon (or this is a bug): strict mode reports an
 //! internal error, lenient mode cuts a best-effort triangle and says so.
@@ -59,8 +60,8 @@ pub(crate) struct ClipScratch {
     cells: Cells,
     /// Fast strategy: the ring's nodes by position, and the tips not marked "not an ear".
     tips: Tips,
-    /// Quality strategy: candidate ears by angle at the tip, with the node's stamp and the
-    /// clipper's epoch when queued.
+    /// Quality strategy: candidate ears (convex tips) by angle at the tip, with the node's
+    /// stamp when queued.
     heap: EarQueue,
     /// Rings still to clip: pieces of a polygon split by a diagonal (lenient fallback).
     pending: Vec<NodeId>,
@@ -75,8 +76,8 @@ pub(crate) struct ClipScratch {
     split_budget: usize,
 }
 
-/// The quality strategy's queue of candidate ears: (angle key, node, stamp, epoch),
-/// smallest first. A 4-ary heap: popping from a queue of a million ears touches half as
+/// The quality strategy's queue of candidate ears: (angle key, node, stamp), smallest
+/// first. A 4-ary heap: popping from a queue of a million ears touches half as
 /// many levels as a binary heap, and a node's four children share a cache line. Entries
 /// are totally ordered (equal ones are identical), so the pop order is that of any
 /// priority queue.
@@ -135,8 +136,8 @@ impl EarQueue {
     }
 }
 
-/// A queued ear: angle key, tip, the tip's stamp and the clipper's epoch when queued.
-type Ear = (u64, NodeId, u32, u32);
+/// A queued candidate ear: angle key, tip, and the tip's stamp when queued.
+type Ear = (u64, NodeId, u32);
 
 /// One polygon being clipped.
 struct Clipper<'a> {
@@ -153,9 +154,6 @@ struct Clipper<'a> {
     /// Lenient mode with crossing edges: ears using a crossed edge wait until nothing else
     /// can be cut, so that overlaps stay where the input crosses itself.
     avoid_crossed: bool,
-    /// Bumped whenever an ear test may change for a tip none of whose neighbours changed
-    /// (see [`Clipper::still_ear`]).
-    epoch: u32,
     /// The fast walk jumps: `cx.clip.tips` holds the ring, and every tip whose mark is
     /// cleared must go in (marked ones drop out when the walk comes across them).
     walking: bool,
@@ -268,7 +266,6 @@ impl<'a> Clipper<'a> {
                 no_fan: false,
                 indexed,
                 avoid_crossed,
-                epoch: 0,
                 walking: false,
             },
             start,
@@ -430,7 +427,7 @@ impl<'a> Clipper<'a> {
         let mut last = start;
         let mut rescanned = false;
         while self.len > 3 {
-            let Some((_, n, stamp, epoch)) = self.cx.clip.heap.pop() else {
+            let Some((_, n, stamp)) = self.cx.clip.heap.pop() else {
                 if self.avoid_crossed {
                     // only ears at crossed edges are left: allow them, look again
                     self.avoid_crossed = false;
@@ -450,8 +447,11 @@ impl<'a> Clipper<'a> {
                 last = self.stuck(last)?;
                 return self.fast(last);
             };
+            // A candidate is tested when it comes up, not when queued: by then most
+            // queued tips have been touched again (a stale stamp), and a tip that was no
+            // ear when queued may have become one.
             let node = self.cx.pool.get(n);
-            if node.removed || node.stamp != stamp || !self.still_ear(n, epoch) {
+            if node.removed || node.stamp != stamp || !self.is_ear(n) {
                 continue;
             }
             let prev = self.cx.pool.prev(n);
@@ -460,7 +460,7 @@ impl<'a> Clipper<'a> {
             for m in [prev, last] {
                 let node = self.cx.pool.get(m);
                 if !node.removed {
-                    self.push_if_ear(m);
+                    self.push_if_convex(m);
                 }
             }
             // `cut` may have tidied away both neighbours of the ear
@@ -474,41 +474,25 @@ impl<'a> Clipper<'a> {
         Ok(())
     }
 
-    /// Pushes every ear of the ring through `start`.
+    /// Queues every convex tip of the ring through `start`.
     fn seed_heap(&mut self, start: NodeId) {
         let mut n = start;
         for _ in 0..self.len {
-            self.push_if_ear(n);
+            self.push_if_convex(n);
             n = self.cx.pool.next(n);
         }
     }
 
-    /// Queues `n` by its tip angle when it is an ear.
-    fn push_if_ear(&mut self, n: NodeId) {
-        if self.cx.pool.get(n).reflex || !self.is_ear(n) {
+    /// Queues `n` by its tip angle when it is convex (the ear test waits until it comes up).
+    fn push_if_convex(&mut self, n: NodeId) {
+        if self.cx.pool.get(n).reflex {
             return;
         }
         let (a, b, c) = self.corner(n);
         // non-negative ranks order like their bit patterns
         let key = approx_angle_rank(a, b, c).to_bits();
         let stamp = self.cx.pool.get(n).stamp;
-        self.cx.clip.heap.push((key, n, stamp, self.epoch));
-    }
-
-    /// Whether `n`, an ear when queued at `epoch` and not touched since, is still one.
-    ///
-    /// Cutting an ear relinks only its two neighbours (whose stamps change), removes a
-    /// vertex and turns reflex vertices convex: the ear test of an untouched tip can only
-    /// change where it looks at a vertex's neighbours, which it does for a vertex lying on
-    /// the triangle's boundary. In valid input that is a vertex at one of the corners'
-    /// positions (no vertex lies inside an edge), so a node at a shared position; the epoch
-    /// moves when such a node's neighbours change, and when a vertex turns reflex again
-    /// (around removed walls). Input with crossing edges is tested again every time.
-    fn still_ear(&self, n: NodeId, epoch: u32) -> bool {
-        let trusted = epoch == self.epoch && (!self.cx.lenient || self.cx.crossings.is_empty());
-        // tests and fuzzing (debug assertions) check the argument on every pop
-        debug_assert!(!trusted || self.is_ear(n), "queued ear {n:?} went stale");
-        trusted || self.is_ear(n)
+        self.cx.clip.heap.push((key, n, stamp));
     }
 
     /// Positions of `n`'s predecessor, `n` and its successor.
@@ -582,9 +566,6 @@ impl<'a> Clipper<'a> {
     fn cut(&mut self, ear: NodeId) -> NodeId {
         let pool = &self.cx.pool;
         let (a, c) = (pool.prev(ear), pool.next(ear));
-        if pool.get(a).shared || pool.get(c).shared {
-            self.epoch = self.epoch.wrapping_add(1);
-        }
         self.emit(a, ear, c);
         self.unlink(ear);
         self.tidy(a);
@@ -690,7 +671,6 @@ impl<'a> Clipper<'a> {
             self.reclassify(n);
             return;
         }
-        self.epoch = self.epoch.wrapping_add(1);
         for m in [self.cx.pool.prev(n), n, self.cx.pool.next(n)] {
             self.reclassify(m);
         }
@@ -714,7 +694,6 @@ impl<'a> Clipper<'a> {
             node.reflex = reflex;
             if reflex {
                 // only possible around removed walls: list it again
-                self.epoch = self.epoch.wrapping_add(1);
                 self.reflex_count += 1;
                 let p = self.cx.pool.p(n);
                 self.cx.clip.reflex.push((n, p));
@@ -1205,7 +1184,7 @@ mod tests {
         for _ in 0..20_000 {
             if random(3) < 2 {
                 // few distinct keys and nodes: ties and duplicates happen
-                let item = (random(50), NodeId(random(40) as u32), random(3) as u32, 0);
+                let item = (random(50), NodeId(random(40) as u32), random(3) as u32);
                 queue.push(item);
                 heap.push(Reverse(item));
             } else {

@@ -35,10 +35,6 @@ pub(crate) struct Node {
     pub not_ear: bool,
     /// Bumped whenever the node's ear status may have changed (quality strategy's queue).
     pub stamp: u32,
-    /// Another node may sit at the same position (rings touching there, a bridge's end):
-    /// ear tests at this position depend on the node's neighbours, not only on its
-    /// position (see `clip`).
-    pub shared: bool,
 }
 
 impl Node {
@@ -56,7 +52,6 @@ impl Node {
             crossed: false,
             not_ear: false,
             stamp: 0,
-            shared: false,
         }
     }
 }
@@ -261,7 +256,6 @@ impl Pool {
         self.get_mut(an).prev = a2;
         for n in [a, b, a2, b2] {
             self.touch(n);
-            self.get_mut(n).shared = true;
         }
         b2
     }

@@ -425,12 +425,13 @@ fn depth_from_nearest(cx: &Context, b: usize, pv: Point) -> Option<u32> {
         return None;
     }
     if near.touch_x.is_finite() {
-        // a point where an edge meets the ray's line at an endpoint, as near as the hit or
-        // nearer: the vertex there decides, if it is nearer and alone
-        return match orient2d(hit.lo, hit.hi, touch) {
-            Orientation::CounterClockwise => depth_from_vertex(cx, &near, pv, touch),
-            _ => None,
-        };
+        // a point where an edge meets the ray's line at an endpoint: nearer than the hit,
+        // the vertex there decides (if alone); on the hit's edge, nothing here does
+        match orient2d(hit.lo, hit.hi, touch) {
+            Orientation::CounterClockwise => return depth_from_vertex(cx, &near, pv, touch),
+            Orientation::Collinear => return None,
+            Orientation::Clockwise => {}
+        }
     }
     Some(cx.rings[hit.ring].depth + u32::from(hit.upward))
 }

@@ -210,7 +210,20 @@ fn configurations() -> Vec<(String, Vec<Ring>)> {
     ];
     out.push((
         "holes whose rays meet reflex vertices of the outer ring".into(),
-        vec![notched, diamond(4.0, 6.0, 1.0), diamond(10.0, 6.0, 1.0)],
+        vec![
+            notched.clone(),
+            diamond(4.0, 6.0, 1.0),
+            diamond(10.0, 6.0, 1.0),
+        ],
+    ));
+    // the ray meets another hole's edge first, and the outer ring's vertex (12, 6) beyond it
+    out.push((
+        "a hole whose ray meets an edge before a vertex".into(),
+        vec![
+            notched,
+            diamond(9.0, 6.0, 0.5),
+            vec![[10.0, 4.0], [11.0, 4.0], [11.0, 8.0], [10.0, 8.0]],
+        ],
     ));
     out.push((
         "an island whose ray meets its hole's vertex".into(),

@@ -568,8 +568,24 @@ impl<'a> Clipper<'a> {
         let (a, c) = (pool.prev(ear), pool.next(ear));
         self.emit(a, ear, c);
         self.unlink(ear);
-        self.tidy(a);
-        self.tidy(c);
+        // Usually neither neighbour repeats a position next to it: then tidying them only
+        // reclassifies both, and their two turns are computed side by side (independent
+        // chains of arithmetic, which the processor overlaps).
+        let pool = &self.cx.pool;
+        let (pp, pa, pc, pn) = (
+            pool.p(pool.prev(a)),
+            pool.p(a),
+            pool.p(c),
+            pool.p(pool.next(c)),
+        );
+        if self.len > 2 && pa != pc && pp != pc && pc != pn && pa != pn {
+            let (ta, tc) = (orient2d(pp, pa, pc), orient2d(pa, pc, pn));
+            self.set_reflex(a, ta != Orientation::CounterClockwise);
+            self.set_reflex(c, tc != Orientation::CounterClockwise);
+        } else {
+            self.tidy(a);
+            self.tidy(c);
+        }
         self.forget_stale_reflex();
         if self.cx.pool.get(c).removed {
             self.cx.pool.next(a)

@@ -34,9 +34,10 @@ fn main() {
         .collect();
     let options = Options::new().with_nesting(Nesting::FirstIsOuter);
     let options = match mode {
-        "fast" => options,
+        // `check` takes only the nesting convention
+        "fast" | "check" => options,
         "lenient" => options.with_lenient(true),
-        "quality" | "check" => options.with_strategy(Strategy::Quality),
+        "quality" => options.with_strategy(Strategy::Quality),
         other => panic!("unknown mode {other}"),
     };
     let mut tri = Triangulator::<f64>::new();

@@ -198,7 +198,8 @@ fn configurations() -> Vec<(String, Vec<Ring>)> {
         "a hole whose ray meets the outer ring's vertex".into(),
         vec![diamond(8.0, 6.0, 6.0), diamond(7.0, 6.0, 2.0)],
     ));
-    // the outer ring's reflex vertex (8, 6), pointing west, and one pointing east at (12, 6)
+    // the outer ring's reflex vertices (8, 6) and (12, 6), tips of notches from the left and
+    // from the top; the hole at (4, 6) lies in the left notch, outside the outer ring
     let notched = vec![
         [0.0, 0.0],
         [16.0, 0.0],

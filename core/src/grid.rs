@@ -25,6 +25,13 @@ const MAX_THIN: usize = 4;
 /// than placing them in cells.
 const ONE_CELL: usize = 32;
 
+/// `v` truncated to a row or column index, clamped to `0..=last` (NaN gives 0). Through
+/// `i64`, whose saturating conversion takes fewer instructions than `usize`'s.
+#[inline]
+pub(crate) fn slot(v: f64, last: usize) -> usize {
+    (v as i64).max(0).min(last as i64) as usize
+}
+
 /// End of a cell's entry list.
 const END: u32 = u32::MAX;
 
@@ -76,14 +83,13 @@ impl EdgeGrid {
     /// Column of x (monotone, clamped to the grid).
     #[inline]
     pub fn column(&self, x: f64) -> usize {
-        // `as` saturates: negative and NaN become 0, huge values the maximum
-        (((x - self.x0) * self.sx) as usize).min(self.nx.max(1) - 1)
+        slot((x - self.x0) * self.sx, self.nx.max(1) - 1)
     }
 
     /// Row of y (monotone, clamped to the grid).
     #[inline]
     pub fn row(&self, y: f64) -> usize {
-        (((y - self.y0) * self.sy) as usize).min(self.ny.max(1) - 1)
+        slot((y - self.y0) * self.sy, self.ny.max(1) - 1)
     }
 
     /// Number of columns.
@@ -120,8 +126,16 @@ impl EdgeGrid {
             self.push(0, n);
             return;
         }
-        let (c0, c1) = (self.column(a.x.min(b.x)), self.column(a.x.max(b.x)));
-        let (r0, r1) = (self.row(a.y.min(b.y)), self.row(a.y.max(b.y)));
+        // columns and rows are monotone: the box's are those of the ends, ordered
+        let (ca, cb) = (self.column(a.x), self.column(b.x));
+        let (ra, rb) = (self.row(a.y), self.row(b.y));
+        let (c0, c1) = if cb < ca { (cb, ca) } else { (ca, cb) };
+        let (r0, r1) = if rb < ra { (rb, ra) } else { (ra, rb) };
+        if r0 == r1 && c0 == c1 {
+            // the usual edge, shorter than a cell
+            self.push(r0 * self.nx + c0, n);
+            return;
+        }
         let (cells, rows, columns) = (self.nx * self.ny, r1 - r0 + 1, c1 - c0 + 1);
         if rows * columns <= MAX_CELLS {
             for r in r0..=r1 {
@@ -510,14 +524,13 @@ impl Cells {
     /// Column of x (monotone, clamped to the grid).
     #[inline]
     fn column(&self, x: f64) -> usize {
-        // `as` saturates: negative and NaN become 0
-        (((x - self.x0) * self.sx) as usize).min(self.nx - 1)
+        slot((x - self.x0) * self.sx, self.nx - 1)
     }
 
     /// Row of y (monotone, clamped to the grid).
     #[inline]
     fn row(&self, y: f64) -> usize {
-        (((y - self.y0) * self.sy) as usize).min(self.ny - 1)
+        slot((y - self.y0) * self.sy, self.ny - 1)
     }
 
     #[inline]

@@ -217,9 +217,12 @@ pub(crate) fn index_all_edges(cx: &mut Context) {
     let mut edges = 0;
     for ring in cx.rings.iter().filter(|r| r.alive) {
         for n in cx.pool.ring(ring.start) {
+            // coordinates are finite: plain comparisons, without `f64::min`'s NaN handling
             let p = cx.pool.p(n);
-            lo = Point::new(lo.x.min(p.x), lo.y.min(p.y));
-            hi = Point::new(hi.x.max(p.x), hi.y.max(p.y));
+            lo.x = if p.x < lo.x { p.x } else { lo.x };
+            lo.y = if p.y < lo.y { p.y } else { lo.y };
+            hi.x = if p.x > hi.x { p.x } else { hi.x };
+            hi.y = if p.y > hi.y { p.y } else { hi.y };
             edges += 1;
         }
     }

@@ -512,8 +512,8 @@ fn overlapping_pairs<B: Bounds>(
     let (nx, ny) = shape((items.len() / 2).max(1), w, h);
     let (sx, sy) = (scale(nx, w), scale(ny, h));
     // `as` saturates: NaN and negative become 0
-    let column = |x: f64| (((x - x0) * sx) as usize).min(nx - 1);
-    let row = |y: f64| (((y - y0) * sy) as usize).min(ny - 1);
+    let column = |x: f64| crate::grid::slot((x - x0) * sx, nx - 1);
+    let row = |y: f64| crate::grid::slot((y - y0) * sy, ny - 1);
     let cells_of = |b: &B| {
         let (l, r, d, u) = b.bounds();
         (column(l), column(r), row(d), row(u))

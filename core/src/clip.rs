@@ -290,11 +290,10 @@ impl<'a> Clipper<'a> {
                 if self.is_ear(ear) {
                     let next = self.cx.pool.next(ear);
                     ear = self.cut(ear);
-                    // continue past the new corner, as earcut does
                     ear = if self.cx.pool.get(next).removed {
                         ear
                     } else {
-                        self.cx.pool.next(next)
+                        self.past_new_corner(next)
                     };
                     // `cut` may have tidied away both neighbours: the walk must start, and
                     // stop, at a live node or it never comes round to `stop`
@@ -338,6 +337,22 @@ impl<'a> Clipper<'a> {
         }
         self.finish(ear)?;
         Ok(())
+    }
+
+    /// Where the walk goes on after a cut whose new corner (the ear's successor) is
+    /// `corner`, a live node. Past it, as earcut does: cutting at the corner next would fan
+    /// from the ear's predecessor. But where the node past it is marked, the walk would only
+    /// step over marked tips (on a ring of round holes, a whole lap per cut), so it tries
+    /// the corner first. On crossing (lenient) input the walk keeps earcut's order, which
+    /// its repairs were tuned against.
+    fn past_new_corner(&self, corner: NodeId) -> NodeId {
+        let pool = &self.cx.pool;
+        let after = pool.next(corner);
+        if pool.get(after).not_ear && self.may_rescan() {
+            corner
+        } else {
+            after
+        }
     }
 
     /// Whether a lap without an ear may look once more. Not for crossing (lenient) input:

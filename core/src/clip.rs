@@ -15,7 +15,8 @@
 //!
 //! `Strategy::Fast` walks the ring (paper §3.3): a tip that failed is marked "not an ear"
 //! until a neighbour changes, and once at most one reflex vertex is left the rest is a fan
-//! from it. `Strategy::Quality` always cuts the ear with the smallest angle at its tip (Mei
+//! from it. After a cut the walk goes on past the new corner, as earcut does, unless the
+//! node past it is marked: then it tries the corner first. `Strategy::Quality` always cuts the ear with the smallest angle at its tip (Mei
 //! et al.), from a priority queue of convex tips: a cut changes the angles of its two
 //! neighbours only, so only they are queued again, and a tip gets its ear test when it
 //! comes up (most queued tips are touched again before that, and skipped).
@@ -348,7 +349,7 @@ impl<'a> Clipper<'a> {
     fn past_new_corner(&self, corner: NodeId) -> NodeId {
         let pool = &self.cx.pool;
         let after = pool.next(corner);
-        if pool.get(after).not_ear && self.may_rescan() {
+        if pool.get(after).not_ear && !self.crossing_input() {
             corner
         } else {
             after
@@ -358,7 +359,12 @@ impl<'a> Clipper<'a> {
     /// Whether a lap without an ear may look once more. Not for crossing (lenient) input:
     /// there the repairs of [`Clipper::stuck`] decide, as tuned against earcut's bounds.
     fn may_rescan(&self) -> bool {
-        !self.cx.lenient || self.cx.crossings.is_empty()
+        !self.crossing_input()
+    }
+
+    /// Lenient mode on input with crossing edges, whose repairs keep earcut's walk.
+    fn crossing_input(&self) -> bool {
+        self.cx.lenient && !self.cx.crossings.is_empty()
     }
 
     /// Clears the "not an ear" marks of the ring through `start`.

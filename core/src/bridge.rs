@@ -427,29 +427,34 @@ fn least_angle_in_triangle(
     best
 }
 
-/// The node at position `target` (merged, of `component`) whose corner contains the
-/// direction towards M: the occurrence M can connect to without crossing its edges.
+/// The merged node at position `target` whose corner contains the direction towards M:
+/// the occurrence M can connect to without crossing its edges. Nodes of `component` (the
+/// polygon of the edge the ray hit) come first; but where the ray hits a vertex that
+/// several polygons share, the hit edge may be another polygon's (holes touching at
+/// vertices around an island of polygon: the ray from a hole further left meets one of
+/// their shared vertices, where the island's edge ties with its surroundings'), and then
+/// the node whose corner holds M is of the polygon around M.
 fn visible_node_at(cx: &Context, target: Point, pm: Point, component: u32) -> Option<NodeId> {
-    let (mut on_side, mut fallback) = (None, None);
+    let (mut on_side, mut fallback, mut elsewhere) = (None, None, None);
     for x in cx.edge_grid.query(target, target) {
         let node = cx.pool.get(x);
-        if node.removed || node.p != target || cx.rings[node.ring as usize].component != component {
+        if node.removed || node.p != target || !cx.rings[node.ring as usize].merged {
             continue;
         }
-        if !cx.rings[node.ring as usize].merged {
-            continue;
-        }
+        let ours = cx.rings[node.ring as usize].component == component;
         let (xn, xp) = (cx.pool.p(node.next), cx.pool.p(node.prev));
         match corner_contains(target, xn, xp, pm) {
-            Some(true) => return Some(x),
+            Some(true) if ours => return Some(x),
+            Some(true) => elsewhere = elsewhere.or(Some(x)),
             // M straight along one of the corner's sides (collinear edges overlap there)
-            None => on_side = on_side.or(Some(x)),
-            Some(false) => fallback = fallback.or(Some(x)),
+            None if ours => on_side = on_side.or(Some(x)),
+            Some(false) if ours => fallback = fallback.or(Some(x)),
+            _ => {}
         }
     }
     // No corner contains M: M lies outside the boundary it sees, which only invalid
     // input allows (a lobe winding the other way). Strict mode refuses it.
-    match on_side {
+    match on_side.or(elsewhere) {
         Some(x) => Some(x),
         None if cx.lenient => fallback,
         None => None,

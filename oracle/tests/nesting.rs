@@ -230,6 +230,19 @@ fn configurations() -> Vec<(String, Vec<Ring>)> {
         "an island whose ray meets its hole's vertex".into(),
         vec![frame, diamond(8.0, 6.0, 5.0), diamond(7.0, 6.0, 2.0)],
     ));
+    // Three holes touching at (5, 2), (5, 3) and (6, 2) enclose an island, the triangle
+    // between them; the left hole's ray meets their shared vertex (5, 3), where the
+    // island's edge ties with the holes' (precision fuzz target, seed 2424).
+    out.push((
+        "a hole whose ray meets a vertex holes share around an island".into(),
+        vec![
+            vec![[1.0, 6.0], [1.0, 2.0], [4.0, 0.0], [8.0, 3.0]],
+            vec![[5.0, 2.0], [5.0, 1.0], [6.0, 2.0]],
+            vec![[2.0, 3.0], [3.0, 3.0], [2.0, 2.0]],
+            vec![[5.0, 3.0], [5.0, 2.0], [4.0, 2.0]],
+            vec![[6.0, 3.0], [5.0, 3.0], [6.0, 2.0]],
+        ],
+    ));
     out
 }
 

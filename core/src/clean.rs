@@ -35,6 +35,9 @@ pub(crate) fn clean(cx: &mut Context, untwist: bool) -> Result<bool, Error> {
     for r in 0..cx.rings.len() {
         filter_ring(cx, r);
     }
+    if !cx.lenient && dropped_geometry(cx, dropped_before) {
+        refuse_hidden_crossing(cx, dropped_before)?;
+    }
     let apart = match sweep_filtered(cx, untwist)? {
         Some(apart) => apart,
         None if untwist => return Ok(false),
@@ -43,17 +46,7 @@ pub(crate) fn clean(cx: &mut Context, untwist: bool) -> Result<bool, Error> {
             // vertex the input only touched. Filter again, keeping straight vertices
             // (for this run and the following ones of this call), and sweep again.
             cx.keep_collinear = true;
-            cx.dropped.truncate(dropped_before);
-            for r in 0..cx.rings.len() {
-                let (first, count) = cx.blocks[r];
-                for n in &mut cx.pool.nodes[first as usize..(first + count) as usize] {
-                    n.removed = false;
-                }
-                cx.pool.link_run(first, count);
-                let ring = &mut cx.rings[r];
-                (ring.start, ring.len, ring.alive) = (NodeId(first), count, true);
-                filter_ring(cx, r);
-            }
+            refilter(cx, dropped_before);
             sweep_filtered(cx, untwist)?.unwrap_or(false)
         }
     };
@@ -133,6 +126,74 @@ fn filter_ring(cx: &mut Context, r: usize) {
             drop_node(cx, n, ring_id, DropReason::DegenerateRing);
             n = next;
         }
+    }
+}
+
+/// Links every ring as loaded again, all its nodes live.
+fn relink_as_loaded(cx: &mut Context) {
+    for r in 0..cx.rings.len() {
+        let (first, count) = cx.blocks[r];
+        for n in &mut cx.pool.nodes[first as usize..(first + count) as usize] {
+            n.removed = false;
+        }
+        cx.pool.link_run(first, count);
+        let ring = &mut cx.rings[r];
+        (ring.start, ring.len, ring.alive) = (NodeId(first), count, true);
+    }
+}
+
+/// Filters every ring again from its loaded nodes, forgetting the drops since
+/// `dropped_before`.
+fn refilter(cx: &mut Context, dropped_before: usize) {
+    cx.dropped.truncate(dropped_before);
+    relink_as_loaded(cx);
+    for r in 0..cx.rings.len() {
+        filter_ring(cx, r);
+    }
+}
+
+/// Whether the filter dropped geometry since `dropped_before`: a spike's tip or a ring
+/// enclosing nothing, whose edges are gone from the rings the sweep sees. (Repeated and
+/// straight vertices leave the rings' point sets as they were.)
+fn dropped_geometry(cx: &Context, dropped_before: usize) -> bool {
+    cx.dropped[dropped_before..]
+        .iter()
+        .any(|d| matches!(d.reason, DropReason::Spike | DropReason::DegenerateRing))
+}
+
+/// Strict mode, after the filter dropped a spike or a degenerate ring: an edge crossing it
+/// crosses the input's boundary, although not the filtered rings'. Looks for a proper
+/// crossing among the edges as loaded and refuses the input if there is one; else filters
+/// again (the same drops). Only inputs with such drops pay for it.
+fn refuse_hidden_crossing(cx: &mut Context, dropped_before: usize) -> Result<(), Error> {
+    relink_as_loaded(cx);
+    cx.starts.clear();
+    // (load makes no ring of zero nodes)
+    cx.starts.extend(cx.rings.iter().map(|r| r.start));
+    let mut flagged = core::mem::take(&mut cx.edges);
+    if !prune::crossing_pair(&cx.pool, &cx.starts, &mut cx.prune, &mut flagged) {
+        // too many long edges over each other for the pairwise scan: the grid finds them
+        crate::nest::index_all_edges(cx);
+        cx.grid_current = false;
+        validate::crossing_pairs(&cx.pool, &cx.edge_grid, &cx.starts, &mut flagged);
+    }
+    let first = flagged.first().copied().zip(flagged.get(1).copied());
+    cx.edges = flagged;
+    if let Some((a, b)) = first {
+        return Err(edges_cross(cx, a, b));
+    }
+    refilter(cx, dropped_before);
+    Ok(())
+}
+
+/// The error for the edges starting at `a` and `b`, which cross.
+fn edges_cross(cx: &Context, a: NodeId, b: NodeId) -> Error {
+    let (na, nb) = (cx.pool.get(a), cx.pool.get(b));
+    Error::EdgesCross {
+        ring_a: cx.rings[na.ring as usize].input as usize,
+        edge_a: na.vertex as usize,
+        ring_b: cx.rings[nb.ring as usize].input as usize,
+        edge_b: nb.vertex as usize,
     }
 }
 
@@ -238,13 +299,7 @@ fn sweep(cx: &mut Context, prune: Option<bool>, may_retry: bool) -> Result<Optio
             return Ok(None);
         }
         if !cx.lenient {
-            let (na, nb) = (cx.pool.get(a), cx.pool.get(b));
-            return Err(Error::EdgesCross {
-                ring_a: cx.rings[na.ring as usize].input as usize,
-                edge_a: na.vertex as usize,
-                ring_b: cx.rings[nb.ring as usize].input as usize,
-                edge_b: nb.vertex as usize,
-            });
+            return Err(edges_cross(cx, a, b));
         }
         report_crossings(cx);
     }

@@ -102,10 +102,40 @@ pub(crate) fn edges_apart(
 /// edges whose boxes overlap. Returns false, with some of the flags set, when the budget ran
 /// out first; the caller must then finish the job another way.
 pub(crate) fn mark_crossed(pool: &mut Pool, starts: &[NodeId], scratch: &mut PruneScratch) -> bool {
-    collect_boxes(pool, starts, &mut scratch.boxes, None);
     let mut flagged = core::mem::take(&mut scratch.flagged);
-    flagged.clear();
-    let done = scan(pool, scratch, CROSSED_BUDGET_PER_EDGE, |e, f| {
+    let done = crossings(pool, starts, scratch, &mut flagged, false);
+    for &n in &flagged {
+        pool.get_mut(n).crossed = true;
+    }
+    scratch.flagged = flagged;
+    done
+}
+
+/// Strict mode: puts into `pair` the start nodes of two edges of the rings through `starts`
+/// that properly cross, if any do (the first pair the scan meets), comparing only edges
+/// whose boxes overlap. Returns false when the budget ran out first; the caller must then
+/// look another way.
+pub(crate) fn crossing_pair(
+    pool: &Pool,
+    starts: &[NodeId],
+    scratch: &mut PruneScratch,
+    pair: &mut Vec<NodeId>,
+) -> bool {
+    crossings(pool, starts, scratch, pair, true)
+}
+
+/// The start nodes of properly crossing edges, pair by pair, into `out` (only the first
+/// pair with `first_only`); false when the budget ran out first.
+fn crossings(
+    pool: &Pool,
+    starts: &[NodeId],
+    scratch: &mut PruneScratch,
+    out: &mut Vec<NodeId>,
+    first_only: bool,
+) -> bool {
+    collect_boxes(pool, starts, &mut scratch.boxes, None);
+    out.clear();
+    scan(pool, scratch, CROSSED_BUDGET_PER_EDGE, |e, f| {
         // edges meeting at a node share an endpoint, which no proper crossing does (the
         // scans visit every pair of neighbours: spare them the predicates)
         if e.to == f.from || f.to == e.from {
@@ -113,16 +143,12 @@ pub(crate) fn mark_crossed(pool: &mut Pool, starts: &[NodeId], scratch: &mut Pru
         }
         let (a, b, c, d) = (pool.p(e.from), pool.p(e.to), pool.p(f.from), pool.p(f.to));
         if crate::clip::crosses(a, b, c, d) {
-            flagged.push(e.from);
-            flagged.push(f.from);
+            out.push(e.from);
+            out.push(f.from);
+            return first_only;
         }
         false
-    }) == Scan::Done;
-    for &n in &flagged {
-        pool.get_mut(n).crossed = true;
-    }
-    scratch.flagged = flagged;
-    done
+    }) != Scan::OutOfBudget
 }
 
 /// Fills `boxes` with the edges of the rings through `starts`, and `nodes` (if given) with

@@ -474,6 +474,21 @@ pub(crate) fn mark_crossed(
     starts: &[NodeId],
     flagged: &mut Vec<NodeId>,
 ) {
+    crossing_pairs(pool, grid, starts, flagged);
+    for &n in flagged.iter() {
+        pool.get_mut(n).crossed = true;
+    }
+}
+
+/// The start nodes of every two edges of the rings through `starts` that properly cross,
+/// pair by pair (a pair may come more than once), into `flagged`, as [`mark_crossed`] finds
+/// them.
+pub(crate) fn crossing_pairs(
+    pool: &Pool,
+    grid: &EdgeGrid,
+    starts: &[NodeId],
+    flagged: &mut Vec<NodeId>,
+) {
     flagged.clear();
     let seg = |pool: &Pool, n: NodeId| Seg {
         edge: n,
@@ -499,9 +514,6 @@ pub(crate) fn mark_crossed(
                 break;
             }
         }
-    }
-    for &n in flagged.iter() {
-        pool.get_mut(n).crossed = true;
     }
 }
 

@@ -243,6 +243,32 @@ fn configurations() -> Vec<(String, Vec<Ring>)> {
             vec![[6.0, 3.0], [5.0, 3.0], [6.0, 2.0]],
         ],
     ));
+    // Zero-width parts that cross the outer ring's edge x = 10: a hole's spike out to
+    // (12, 2), and a ring of two points. Cleaning drops both, and with them the crossing,
+    // which the input has all the same (precision fuzz target, seeds 2424 and 3131).
+    let square10 = vec![[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]];
+    out.push((
+        "a hole's spike across the outer ring".into(),
+        vec![
+            square10.clone(),
+            vec![[3.0, 4.0], [2.0, 2.0], [12.0, 2.0], [4.0, 2.0]],
+        ],
+    ));
+    out.push((
+        "a hole's spike inside the outer ring".into(),
+        vec![
+            square10.clone(),
+            vec![[3.0, 4.0], [2.0, 2.0], [8.0, 2.0], [4.0, 2.0]],
+        ],
+    ));
+    out.push((
+        "a ring of two points across the outer ring".into(),
+        vec![square10.clone(), vec![[5.0, 5.0], [15.0, 5.0]]],
+    ));
+    out.push((
+        "a ring of two points inside the outer ring".into(),
+        vec![square10, vec![[5.0, 5.0], [8.0, 5.0]]],
+    ));
     out
 }
 

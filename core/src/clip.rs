@@ -81,10 +81,23 @@ pub(crate) struct ClipScratch {
 /// first. A 4-ary heap: popping from a queue of a million ears touches half as
 /// many levels as a binary heap, and a node's four children share a cache line. Entries
 /// are totally ordered (equal ones are identical), so the pop order is that of any
-/// priority queue.
+/// priority queue. Each entry is packed into one `u128` (key, node, stamp from the high
+/// bits down), which orders exactly as the tuple does and compares in two instructions.
 #[derive(Debug, Default)]
 struct EarQueue {
-    items: Vec<Ear>,
+    items: Vec<u128>,
+}
+
+fn pack((key, node, stamp): Ear) -> u128 {
+    u128::from(key) << 64 | u128::from(node.0) << 32 | u128::from(stamp)
+}
+
+fn unpack(item: u128) -> Ear {
+    (
+        (item >> 64) as u64,
+        NodeId((item >> 32) as u32),
+        item as u32,
+    )
 }
 
 impl EarQueue {
@@ -93,6 +106,7 @@ impl EarQueue {
     }
 
     fn push(&mut self, item: Ear) {
+        let item = pack(item);
         let mut i = self.items.len();
         self.items.push(item);
         while i > 0 {
@@ -109,7 +123,7 @@ impl EarQueue {
     fn pop(&mut self) -> Option<Ear> {
         let last = self.items.pop()?;
         let Some(&top) = self.items.first() else {
-            return Some(last);
+            return Some(unpack(last));
         };
         // sift `last` down from the root
         let len = self.items.len();
@@ -133,7 +147,7 @@ impl EarQueue {
             i = child;
         }
         self.items[i] = last;
-        Some(top)
+        Some(unpack(top))
     }
 }
 

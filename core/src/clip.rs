@@ -133,17 +133,35 @@ impl EarQueue {
             if first >= len {
                 break;
             }
-            let end = (first + 4).min(len);
-            let mut child = first;
-            for c in first + 1..end {
-                if self.items[c] < self.items[child] {
-                    child = c;
+            let (child, smallest) = match self.items.get(first..first + 4) {
+                // all four children: a tournament, two independent comparisons first
+                Some(&[a, b, c, d]) => {
+                    let (one, x) = if b < a { (first + 1, b) } else { (first, a) };
+                    let (two, y) = if d < c {
+                        (first + 3, d)
+                    } else {
+                        (first + 2, c)
+                    };
+                    if y < x {
+                        (two, y)
+                    } else {
+                        (one, x)
+                    }
                 }
-            }
-            if last <= self.items[child] {
+                _ => {
+                    let mut child = first;
+                    for c in first + 1..len {
+                        if self.items[c] < self.items[child] {
+                            child = c;
+                        }
+                    }
+                    (child, self.items[child])
+                }
+            };
+            if last <= smallest {
                 break;
             }
-            self.items[i] = self.items[child];
+            self.items[i] = smallest;
             i = child;
         }
         self.items[i] = last;

@@ -16,10 +16,11 @@
 //! `Strategy::Fast` walks the ring (paper §3.3): a tip that failed is marked "not an ear"
 //! until a neighbour changes, and once at most one reflex vertex is left the rest is a fan
 //! from it. After a cut the walk goes on past the new corner, as earcut does, unless the
-//! node past it is marked: then it tries the corner first. `Strategy::Quality` always cuts the ear with the smallest angle at its tip (Mei
-//! et al.), from a priority queue of convex tips: a cut changes the angles of its two
-//! neighbours only, so only they are queued again, and a tip gets its ear test when it
-//! comes up (most queued tips are touched again before that, and skipped).
+//! node past it is marked: then it tries the corner first. `Strategy::Quality` always
+//! cuts the ear with the smallest angle at its tip (Mei et al.), from a priority queue of
+//! convex tips: a cut changes the angles of its two neighbours only, so only they are
+//! queued again, and a tip gets its ear test when it comes up (most queued tips are
+//! touched again before that, and skipped).
 //!
 //! A ring with no ear left is not a valid polygon (or this is a bug): strict mode reports an
 //! internal error, lenient mode cuts a best-effort triangle and says so.

@@ -10,42 +10,76 @@
 //! everywhere and changes by one across each boundary edge (or by nothing across two
 //! lying on each other), so it is the parity of the edges crossed.
 //!
-//! The cut keeps every edge and only re-pairs, at each position the ring passes more than
-//! once, which edge leaves after which edge arrives: walking the ring once, a position seen
-//! before closes the loop walked since then (a stack, as when splitting a closed walk into
-//! simple cycles). Each lobe becomes a new ring entry with the same input ring number;
-//! `touch` joins them again properly once nesting has turned them. Input with crossing
-//! edges is left whole: it has no region to keep, and its repairs were tuned on whole rings.
+//! The cut keeps every edge and only re-pairs, at a position the ring passes more than
+//! once, which edge leaves after which edge arrives. It must not make lobes that cross
+//! there, or the lobes overlap and the even–odd rule counts their overlap twice. So the
+//! edges at such a position X are taken in their order around X, and each visit's pair
+//! (the edge arriving, the edge leaving) is a chord of that circle. Where no two chords
+//! cross, the ring only touches itself at X and is left as it is there. Where two cross,
+//! the ring crosses itself at X (a figure eight whose lobes turn opposite ways does), and
+//! the edges are paired again as nested brackets, arriving edges opening: no two of the
+//! new chords cross. Edges lying on one another (a segment walked twice) have no order
+//! around X of their own; they are ordered by a lane (the edge's first node), one way at
+//! one end of the segment and the other way at the other end, as if each were bowed
+//! aside by its lane, so that the choices at the two ends agree and the strands do not
+//! cross between them. With no crossing left anywhere, the rings can be drawn apart into
+//! disjoint simple curves, and nesting them by containment is the even–odd rule.
+//!
+//! A re-paired ring falls into one or more cycles; each new cycle becomes a new ring entry
+//! with the same input ring number, and `touch` joins them again properly once nesting has
+//! turned them. Input with crossing edges is left whole: it has no region to keep, and its
+//! repairs were tuned on whole rings.
 //!
 //! Strict mode keeps rings whole too: a ring whose lobes turn opposite ways is refused
 //! there (as `Error::LobesWindOpposite`, or as rings crossing at a vertex), cancelled lobe
 //! or not.
 
 use crate::pool::NodeId;
+use crate::predicates::{cmp_around, cmp_xy, Point};
 use crate::triangulator::{Context, Ring};
+use core::cmp::Ordering;
 
 /// Scratch buffers of the lobe split, kept between calls.
 #[derive(Debug, Default)]
 pub(crate) struct LobeScratch {
     /// Per node: the index into `cx.shared` of its position's first node, or `NONE`.
     group: Vec<u32>,
-    /// Per position (by its first index into `cx.shared`): its entry in `stack`, or `NONE`.
-    open: Vec<u32>,
-    /// The positions visited on the walk so far whose loops are still open, in walk order.
-    stack: Vec<(u32, NodeId)>,
+    /// Per position (by its first index into `cx.shared`): how often the ring being split
+    /// passes it, or `NONE`.
+    visits: Vec<u32>,
+    /// The positions the ring being split passes more than once.
+    pinches: Vec<u32>,
+    /// The edge ends at one position: the far end, the lane, whether the edge arrives,
+    /// the visit (chord) it belongs to, and the edge (its first node).
+    ends: Vec<(Point, u32, bool, u32, NodeId)>,
+    /// Open chords, or the ends of arriving edges, while pairing the ends at one position.
+    stack: Vec<u32>,
+    /// New links: (edge arriving, by its first node; node whose edge leaves next).
+    pairs: Vec<(NodeId, NodeId)>,
     /// One ring's nodes in order.
     walk: Vec<NodeId>,
     /// Rings that pass some position more than once.
+    candidates: Vec<u32>,
+    /// The ring's visits at one position (its nodes there).
+    at: Vec<NodeId>,
+    /// Per visit at one position, the place of its arriving edge's end in `ends`.
+    arrival: Vec<u32>,
+    /// Per node of the ring being split: the cycle it lies on, or `NONE`.
+    cycle: Vec<u32>,
+    /// Cycle labels handed out so far.
+    labels: u32,
+    /// Rings re-paired somewhere, so split into lobes (or at least not in input order).
     rings: Vec<u32>,
 }
 
 const NONE: u32 = u32::MAX;
 
-/// Splits every ring that passes a position more than once into lobes (lenient mode).
-/// Returns whether any ring was split.
+/// Re-pairs every ring that crosses itself at a position it passes more than once
+/// (lenient mode), splitting it into lobes. Returns whether any ring was re-paired.
 pub(crate) fn split(cx: &mut Context) -> bool {
     let mut s = core::mem::take(&mut cx.lobes);
     s.rings.clear();
+    s.candidates.clear();
     // rings visiting one position twice, from the groups of shared nodes
     let mut i = 0;
     while i < cx.shared.len() {
@@ -55,18 +89,17 @@ pub(crate) fn split(cx: &mut Context) -> bool {
             let repeats = cx.shared[a + 1..j]
                 .iter()
                 .any(|&n| cx.pool.get(n).ring == ra);
-            if repeats && !cx.pool.get(cx.shared[a]).removed && !s.rings.contains(&ra) {
-                s.rings.push(ra);
+            if repeats && !cx.pool.get(cx.shared[a]).removed && !s.candidates.contains(&ra) {
+                s.candidates.push(ra);
             }
         }
         i = j;
     }
-    let split_any = !s.rings.is_empty();
-    if split_any {
+    if !s.candidates.is_empty() {
         s.group.clear();
         s.group.resize(cx.pool.len(), NONE);
-        s.open.clear();
-        s.open.resize(cx.shared.len(), NONE);
+        s.visits.clear();
+        s.visits.resize(cx.shared.len(), NONE);
         let mut i = 0;
         while i < cx.shared.len() {
             let j = crate::touch::same_position_end(cx, i);
@@ -75,52 +108,88 @@ pub(crate) fn split(cx: &mut Context) -> bool {
             }
             i = j;
         }
-        for k in 0..s.rings.len() {
-            let r = s.rings[k] as usize;
-            split_ring(cx, &mut s, r);
+        for k in 0..s.candidates.len() {
+            let r = s.candidates[k];
+            if split_ring(cx, &mut s, r as usize) {
+                s.rings.push(r);
+            }
         }
     }
+    let split_any = !s.rings.is_empty();
     cx.lobes = s;
     split_any
 }
 
-/// Walks ring `r` once; a position met again closes the loop walked since its last visit.
-fn split_ring(cx: &mut Context, s: &mut LobeScratch, r: usize) {
+/// Re-pairs ring `r` where it crosses itself, cuts the cycles that gives apart where they
+/// touch themselves (where that crosses nothing), then gives each cycle a ring entry of
+/// its own. Returns whether anything was re-paired or cut.
+fn split_ring(cx: &mut Context, s: &mut LobeScratch, r: usize) -> bool {
     let ring = cx.rings[r];
     if !ring.alive {
-        return;
+        return false;
     }
     s.walk.clear();
     s.walk.extend(cx.pool.ring(ring.start));
-    s.stack.clear();
-    let mut closed = 0;
-    for k in 0..s.walk.len() {
-        let w = s.walk[k];
+    s.pinches.clear();
+    for &w in &s.walk {
         let g = s.group[w.idx()];
         if g == NONE {
             continue;
         }
-        let at = s.open[g as usize];
-        if at == NONE {
-            s.open[g as usize] = s.stack.len() as u32;
-            s.stack.push((g, w));
+        let v = &mut s.visits[g as usize];
+        *v = if *v == NONE { 1 } else { *v + 1 };
+        if *v == 2 {
+            s.pinches.push(g);
+        }
+    }
+    for &w in &s.walk {
+        let g = s.group[w.idx()];
+        if g != NONE {
+            s.visits[g as usize] = NONE;
+        }
+    }
+    let r32 = r as u32;
+    // 1. where the ring crosses itself, pair its edges there again
+    s.pairs.clear();
+    for k in 0..s.pinches.len() {
+        let g = s.pinches[k] as usize;
+        repair(cx, s, g, r32);
+    }
+    // every pair's edge ends at its own position, so no link is set twice
+    for &(a, d) in &s.pairs {
+        cx.pool.get_mut(a).next = d;
+        cx.pool.get_mut(d).prev = a;
+    }
+    let mut changed = !s.pairs.is_empty();
+    // 2. label the cycles, then cut each apart where it passes a position twice
+    s.cycle.clear();
+    s.cycle.resize(cx.pool.len(), NONE);
+    s.labels = 0;
+    for k in 0..s.walk.len() {
+        let v = s.walk[k];
+        if s.cycle[v.idx()] == NONE {
+            label(cx, &mut s.cycle, v, s.labels);
+            s.labels += 1;
+        }
+    }
+    for k in 0..s.pinches.len() {
+        let g = s.pinches[k] as usize;
+        changed |= cut(cx, s, g, r32);
+    }
+    if !changed {
+        return false;
+    }
+    // each cycle a ring: the first keeps number r
+    for &w in &s.walk {
+        cx.pool.get_mut(w).ring = NONE;
+    }
+    let mut first = true;
+    for k in 0..s.walk.len() {
+        let v = s.walk[k];
+        if cx.pool.get(v).ring != NONE {
             continue;
         }
-        // the loop from v (the last visit) to just before w becomes a lobe; the walk
-        // goes on from w, which takes v's place on the stack
-        let at = at as usize;
-        for &(h, _) in &s.stack[at + 1..] {
-            s.open[h as usize] = NONE;
-        }
-        s.stack.truncate(at + 1);
-        let v = s.stack[at].1;
-        s.stack[at].1 = w;
-        let (pv, pw) = (cx.pool.prev(v), cx.pool.prev(w));
-        cx.pool.get_mut(pw).next = v;
-        cx.pool.get_mut(v).prev = pw;
-        cx.pool.get_mut(pv).next = w;
-        cx.pool.get_mut(w).prev = pv;
-        let index = cx.rings.len() as u32;
+        let index = if first { r32 } else { cx.rings.len() as u32 };
         let mut len = 0;
         let mut n = v;
         loop {
@@ -131,8 +200,7 @@ fn split_ring(cx: &mut Context, s: &mut LobeScratch, r: usize) {
                 break;
             }
         }
-        closed += len;
-        cx.rings.push(Ring {
+        let lobe = Ring {
             start: v,
             len,
             rightmost: v,
@@ -141,16 +209,163 @@ fn split_ring(cx: &mut Context, s: &mut LobeScratch, r: usize) {
             merged: false,
             component: index,
             ..ring
-        });
+        };
+        if first {
+            cx.rings[r] = lobe;
+            first = false;
+        } else {
+            cx.rings.push(lobe);
+        }
     }
-    for &(h, _) in &s.stack {
-        s.open[h as usize] = NONE;
+    true
+}
+
+/// Gives every node on the cycle through `v` the label `l`.
+fn label(cx: &Context, cycle: &mut [u32], v: NodeId, l: u32) {
+    let mut n = v;
+    loop {
+        cycle[n.idx()] = l;
+        n = cx.pool.next(n);
+        if n == v {
+            break;
+        }
     }
-    // the walk's last node is never inside a closed loop: it is the rest of the ring
-    if let Some(&last) = s.walk.last() {
-        cx.rings[r].start = last;
-        cx.rings[r].len = ring.len - closed;
+}
+
+/// Fills `s.at` with ring `r`'s nodes at the position whose nodes start at `cx.shared[g]`
+/// (its visits there) and `s.ends` with their edges' ends, sorted around the position;
+/// edges lying on one another by lane, reversed at the segment's other end.
+fn sorted_ends(cx: &Context, s: &mut LobeScratch, g: usize, r: u32) -> Point {
+    let o = cx.pool.p(cx.shared[g]);
+    let end = crate::touch::same_position_end(cx, g);
+    s.at.clear();
+    s.ends.clear();
+    for &m in &cx.shared[g..end] {
+        let node = cx.pool.get(m);
+        if node.ring != r || node.removed {
+            continue;
+        }
+        let (prev, next) = (node.prev, node.next);
+        let visit = s.at.len() as u32;
+        s.at.push(m);
+        s.ends
+            .push((cx.pool.p(prev), prev.idx() as u32, true, visit, prev));
+        s.ends
+            .push((cx.pool.p(next), m.idx() as u32, false, visit, m));
     }
+    s.ends.sort_unstable_by(|a, b| {
+        cmp_around(o, a.0, b.0).then_with(|| match cmp_xy(o, a.0) {
+            Ordering::Less => b.1.cmp(&a.1),
+            _ => a.1.cmp(&b.1),
+        })
+    });
+    o
+}
+
+/// Whether the chords the ends belong to nest like brackets (read from any start): that
+/// is, whether no two cross.
+fn nested(ends: &[(Point, u32, bool, u32, NodeId)], stack: &mut Vec<u32>) -> bool {
+    stack.clear();
+    for &(_, _, _, chord, _) in ends {
+        if stack.last() == Some(&chord) {
+            stack.pop();
+        } else {
+            stack.push(chord);
+        }
+    }
+    stack.is_empty()
+}
+
+/// At the position whose nodes start at `cx.shared[g]`, pairs ring `r`'s edges again as
+/// nested brackets if two of its visits cross there; the new links go to `s.pairs`.
+fn repair(cx: &Context, s: &mut LobeScratch, g: usize, r: u32) {
+    sorted_ends(cx, s, g, r);
+    if nested(&s.ends, &mut s.stack) {
+        return;
+    }
+    // brackets from just after the lowest running sum (arriving +1, leaving −1), so that
+    // every leaving edge finds an arriving edge open
+    let (mut sum, mut lowest, mut from) = (0i64, 0i64, 0);
+    for (k, e) in s.ends.iter().enumerate() {
+        sum += if e.2 { 1 } else { -1 };
+        if sum < lowest {
+            (lowest, from) = (sum, k + 1);
+        }
+    }
+    s.stack.clear();
+    let count = s.ends.len();
+    for k in 0..count {
+        let at = (from + k) % count;
+        let (_, _, arrives, _, edge) = s.ends[at];
+        if arrives {
+            s.stack.push(at as u32);
+        } else if let Some(a) = s.stack.pop() {
+            s.pairs.push((s.ends[a as usize].4, edge));
+        }
+    }
+}
+
+/// Most visits of one ring at one position that `cut` tries in pairs (it takes time
+/// cubic in their number); past it, cycles through the position stay whole there.
+const MOST_VISITS_CUT: usize = 64;
+
+/// At the position whose nodes start at `cx.shared[g]`, cuts every cycle of ring `r` that
+/// passes it twice into two, where the new pairs cross no other there. Returns whether
+/// it cut any.
+fn cut(cx: &mut Context, s: &mut LobeScratch, g: usize, r: u32) -> bool {
+    sorted_ends(cx, s, g, r);
+    let k = s.at.len();
+    if !(2..=MOST_VISITS_CUT).contains(&k) {
+        return false;
+    }
+    // per visit, its arriving end's place in `s.ends`
+    s.arrival.clear();
+    s.arrival.resize(k, 0);
+    for (e, end) in s.ends.iter().enumerate() {
+        if end.2 {
+            s.arrival[end.3 as usize] = e as u32;
+        }
+    }
+    let mut any = false;
+    for i in 0..k {
+        for j in i + 1..k {
+            let (mi, mj) = (s.at[i], s.at[j]);
+            if s.cycle[mi.idx()] != s.cycle[mj.idx()] {
+                continue;
+            }
+            // each visit takes the other's arriving edge
+            let (ai, aj) = (s.arrival[i] as usize, s.arrival[j] as usize);
+            s.ends[ai].3 = j as u32;
+            s.ends[aj].3 = i as u32;
+            if !nested(&s.ends, &mut s.stack) {
+                s.ends[ai].3 = i as u32;
+                s.ends[aj].3 = j as u32;
+                continue;
+            }
+            s.arrival.swap(i, j);
+            let (pi, pj) = (cx.pool.prev(mi), cx.pool.prev(mj));
+            cx.pool.get_mut(pi).next = mj;
+            cx.pool.get_mut(mj).prev = pi;
+            cx.pool.get_mut(pj).next = mi;
+            cx.pool.get_mut(mi).prev = pj;
+            // the cycles are mi … pj and mj … pi: label the shorter one anew
+            let (mut a, mut b) = (mi, mj);
+            let shorter = loop {
+                a = cx.pool.next(a);
+                if a == mi {
+                    break mi;
+                }
+                b = cx.pool.next(b);
+                if b == mj {
+                    break mj;
+                }
+            };
+            label(cx, &mut s.cycle, shorter, s.labels);
+            s.labels += 1;
+            any = true;
+        }
+    }
+    any
 }
 
 /// Whether ring `r` is a lobe, or what is left of a ring split into lobes.
@@ -195,24 +410,110 @@ mod tests {
         out
     }
 
-    #[test]
-    fn a_ring_through_one_point_three_times_gives_three_lobes() {
-        let petals = [
+    /// `lobes` sorted, each turned to start at its least point and walked whichever way
+    /// comes first (cleaning orients every ring), for comparing.
+    fn canonical(lobes: Vec<Vec<[f64; 2]>>) -> Vec<Vec<[f64; 2]>> {
+        let mut lobes: Vec<_> = lobes
+            .into_iter()
+            .map(|lobe| {
+                let mut ways = [lobe.clone(), lobe.into_iter().rev().collect()];
+                for way in &mut ways {
+                    let least = (0..way.len())
+                        .min_by(|&i, &j| way[i].partial_cmp(&way[j]).unwrap())
+                        .unwrap();
+                    way.rotate_left(least);
+                }
+                let [a, b] = ways;
+                if a <= b {
+                    a
+                } else {
+                    b
+                }
+            })
+            .collect();
+        lobes.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        lobes
+    }
+
+    /// Three petals round the origin, the top one walked the other way round.
+    fn petals(top_turns_back: bool) -> Vec<[f64; 2]> {
+        let (a, b) = if top_turns_back {
+            ([-1.0, 4.0], [1.0, 4.0])
+        } else {
+            ([1.0, 4.0], [-1.0, 4.0])
+        };
+        vec![
             [0.0, 0.0],
             [4.0, -1.0],
             [4.0, 1.0],
             [0.0, 0.0],
-            [-1.0, 4.0],
-            [1.0, 4.0],
+            a,
+            b,
             [0.0, 0.0],
             [-4.0, 1.0],
             [-4.0, -1.0],
+        ]
+    }
+
+    #[test]
+    fn a_ring_through_one_point_three_times_gives_three_lobes() {
+        // whether the top petal turns with the others (the ring touches itself) or
+        // against them (it crosses itself there)
+        for top_turns_back in [false, true] {
+            let lobes = canonical(lobes(&[&petals(top_turns_back)]));
+            let want = canonical(vec![
+                vec![[0.0, 0.0], [4.0, -1.0], [4.0, 1.0]],
+                vec![[0.0, 0.0], [-1.0, 4.0], [1.0, 4.0]],
+                vec![[0.0, 0.0], [-4.0, 1.0], [-4.0, -1.0]],
+            ]);
+            assert_eq!(lobes, want, "top petal turns back: {top_turns_back}");
+        }
+    }
+
+    #[test]
+    fn a_hole_lobe_touching_the_outer_lobe_is_cut_off() {
+        // a rectangle whose boundary runs round a triangle inside it from the bottom
+        // midpoint: cut there, the triangle is a lobe of its own, which nesting makes a
+        // hole
+        let (x, t1, t2) = ([0.0, 0.0], [-1.0, 2.0], [1.0, 2.0]);
+        let ring = [
+            x,
+            [4.0, 0.0],
+            [4.0, 4.0],
+            [-4.0, 4.0],
+            [-4.0, 0.0],
+            x,
+            t1,
+            t2,
         ];
-        let lobes = lobes(&[&petals]);
-        assert_eq!(lobes.len(), 3);
-        for lobe in &lobes {
-            assert_eq!(lobe.len(), 3);
-            assert!(lobe.contains(&[0.0, 0.0]));
+        let want = canonical(vec![
+            vec![x, [4.0, 0.0], [4.0, 4.0], [-4.0, 4.0], [-4.0, 0.0]],
+            vec![x, t1, t2],
+        ]);
+        assert_eq!(canonical(lobes(&[&ring])), want);
+    }
+
+    #[test]
+    fn lobes_do_not_overlap_whichever_copy_of_a_repeated_vertex_survives() {
+        // fuzz (raw_rings, seed 7171): the outer ring A B C A D C E runs round the triangle
+        // A B C twice, B lies on A–D, and a hole B C A cancels one of the turns. The
+        // lobes must be A B C and A B D C E, not two that cover A B C both.
+        let (a, b, c, d, e) = (
+            [-12.0, -12.0],
+            [-12.0, 1.0],
+            [0.0, 0.0],
+            [-12.0, 15.0],
+            [1.0, 0.0],
+        );
+        let hole = [b, c, a];
+        let want = canonical(vec![vec![a, b, c], vec![a, b, d, c, e], vec![b, c, a]]);
+        for outer in [vec![a, b, c, a, d, c, e], vec![a, b, c, a, a, d, c, e]] {
+            for turn in 0..outer.len() {
+                let mut outer = outer.clone();
+                outer.rotate_left(turn);
+                let lobes = lobes(&[&hole, &outer]);
+                assert_eq!(canonical(lobes), want, "outer ring {outer:?}");
+            }
         }
     }
 

@@ -287,7 +287,7 @@ fn judge_geometry(
             .push(geo::area_check(polygon_area, triangle_area, terms, scale));
         verdict
             .checks
-            .push(geo::containment(&rings, pts, &mesh.tris));
+            .push(geo::containment(&rings, region, pts, &mesh.tris));
     }
     if opts.cdt {
         compare_cdt(verdict, region, &mesh);

@@ -101,6 +101,27 @@ fn accepted_inputs() -> Vec<(&'static str, Input)> {
                 Nesting::FirstIsOuter,
             ),
         ),
+        (
+            // The outer ring runs round the triangle A B C twice and the hole cancels one
+            // turn: geo, reading each ring by the even-odd rule, calls A B C outside; the
+            // triangles there are skipped, not failed.
+            "ring winding twice round a triangle",
+            Input::from_rings(
+                &[
+                    vec![[-12.0, 1.0], [0.0, 0.0], [-12.0, -12.0]],
+                    vec![
+                        [-12.0, -12.0],
+                        [-12.0, 1.0],
+                        [0.0, 0.0],
+                        [-12.0, -12.0],
+                        [-12.0, 15.0],
+                        [0.0, 0.0],
+                        [1.0, 0.0],
+                    ],
+                ],
+                Nesting::Auto,
+            ),
+        ),
     ];
     for name in [
         "hole-touching-outer.json",

@@ -1,6 +1,7 @@
 //! Rings lying on each other, against the oracle: copies of a ring (the same way round or
 //! reversed, from any start), copies with a zero-width spike out of or into the ring,
-//! copies inside a third ring, and a ring touching itself where another ring touches it.
+//! copies inside a third ring, a ring touching itself where another ring touches it, and
+//! a ring winding twice round a triangle that a hole cancels.
 //! `raw_rings` found such inputs where polytri's nesting and the oracle's disagreed.
 //!
 //! For every configuration, in four exact rotations, with every ring in both windings and
@@ -269,6 +270,28 @@ fn configurations() -> Vec<(String, Vec<Ring>)> {
         "a ring of two points inside the outer ring".into(),
         vec![square10, vec![[5.0, 5.0], [8.0, 5.0]]],
     ));
+    // An outer ring A B C A D C E winding twice round the triangle A B C, B on A–D, and a
+    // hole B C A: the region is A D C E (raw_rings, seed 7171). Lenient mode cut the ring
+    // into lobes that overlapped, depending on which copy of a repeated vertex survived
+    // cleaning: so every start, with A repeated and without.
+    let (a, b, c, d, e) = (
+        [-12.0, -12.0],
+        [-12.0, 1.0],
+        [0.0, 0.0],
+        [-12.0, 15.0],
+        [1.0, 0.0],
+    );
+    for (name, outer) in [
+        ("", vec![a, b, c, a, d, c, e]),
+        (", A repeated", vec![a, b, c, a, a, d, c, e]),
+    ] {
+        for k in 0..outer.len() {
+            out.push((
+                format!("a ring twice round a triangle a hole cancels{name}, from {k}"),
+                vec![vec![b, c, a], from(&outer, k)],
+            ));
+        }
+    }
     out
 }
 

@@ -464,7 +464,11 @@ impl Region {
 
     /// The winding number of every ring whose edges the ray from `probe` may meet; `None`
     /// for rings the probe lies on. Rings left out have winding 0 there.
-    fn windings_by_ring(&self, probe: &Probe, stamps: &mut Stamps) -> HashMap<u32, Option<i64>> {
+    pub(crate) fn windings_by_ring(
+        &self,
+        probe: &Probe,
+        stamps: &mut Stamps,
+    ) -> HashMap<u32, Option<i64>> {
         let mut out: HashMap<u32, Option<i64>> = HashMap::new();
         self.for_each_step(probe, stamps, |_, e, step| {
             let slot = out.entry(e.ring).or_insert(Some(0));

@@ -435,7 +435,7 @@ fn least_angle_in_triangle(
 /// their shared vertices, where the island's edge ties with its surroundings'), and then
 /// the node whose corner holds M is of the polygon around M.
 fn visible_node_at(cx: &Context, target: Point, pm: Point, component: u32) -> Option<NodeId> {
-    let (mut on_side, mut fallback, mut elsewhere) = (None, None, None);
+    let (mut on_side, mut fallback, mut elsewhere, mut tip) = (None, None, None, None);
     for x in cx.edge_grid.query(target, target) {
         let node = cx.pool.get(x);
         if node.removed || node.p != target || !cx.rings[node.ring as usize].merged {
@@ -448,13 +448,17 @@ fn visible_node_at(cx: &Context, target: Point, pm: Point, component: u32) -> Op
             Some(true) => elsewhere = elsewhere.or(Some(x)),
             // M straight along one of the corner's sides (collinear edges overlap there)
             None if ours => on_side = on_side.or(Some(x)),
+            // The tip of a wall the ring runs out along and back (joining rings where
+            // they touch leaves such walls where a hole cancelled a lobe): its corner
+            // is empty or the whole turn, and the ray reached it from the region.
+            Some(false) if ours && on_ray(target, xn, xp) => tip = tip.or(Some(x)),
             Some(false) if ours => fallback = fallback.or(Some(x)),
             _ => {}
         }
     }
     // No corner contains M: M lies outside the boundary it sees, which only invalid
     // input allows (a lobe winding the other way). Strict mode refuses it.
-    match on_side.or(elsewhere) {
+    match on_side.or(elsewhere).or(tip) {
         Some(x) => Some(x),
         None if cx.lenient => fallback,
         None => None,

@@ -323,6 +323,7 @@ fn rank(o: Point, back: Point, q: Point) -> u8 {
 /// boundary (depth 0) or a hole (depth 1). The old ring entries stay, dead, for reporting.
 fn retrace(cx: &mut Context) {
     let old = cx.rings.len();
+    let crossing = cx.lenient && !cx.crossings.is_empty();
     for k in 0..cx.pool.len() {
         let n = NodeId(k as u32);
         let ring = cx.pool.get(n).ring as usize;
@@ -366,9 +367,9 @@ fn retrace(cx: &mut Context) {
             rightmost,
             depth: u32::from(hole),
             // A cycle that never turns is a zero-width wall (edges walked both ways):
-            // it encloses nothing, and no hole may bridge to it. (Lenient mode keeps it:
-            // on crossing input its repairs were tuned with such walls in place.)
-            alive: !flat || cx.lenient,
+            // it encloses nothing, and no hole may bridge to it. (Lenient mode keeps it
+            // on crossing input: its repairs there were tuned with such walls in place.)
+            alive: !flat || crossing,
             merged: false,
             component: index,
         });

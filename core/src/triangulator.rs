@@ -101,6 +101,8 @@ pub(crate) struct Context {
     /// Scratch of `touch`: the new successor of each node of one shared position.
     pub relink: Vec<(NodeId, NodeId)>,
     pub touch_ends: Vec<(crate::predicates::Point, NodeId, bool)>,
+    /// Scratch: one ring's positions with its walls taken out (see `touch::retrace`).
+    pub touch_walk: Vec<crate::predicates::Point>,
     pub touch_nets: Vec<(crate::predicates::Point, i32)>,
     pub crossings: Vec<validate::Crossing>,
     pub sweep: SweepScratch,

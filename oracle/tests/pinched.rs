@@ -145,7 +145,6 @@ struct Tally {
     cases: usize,
     splices: usize,
     most: usize,
-    strict_refused: usize,
     failures: Vec<String>,
 }
 
@@ -155,7 +154,7 @@ impl Tally {
     fn assert_passed(&self) {
         let (cases, splices, most) = (self.cases, self.splices, self.most);
         assert!(
-            cases >= 100 && most >= 3,
+            cases >= 200 && most >= 3,
             "{cases} cases, {splices} splices, at most {most}"
         );
         assert!(
@@ -167,13 +166,12 @@ impl Tally {
     }
 }
 
-/// 150 seeded `touching-holes` cases, spliced by [`pinched`] (up to `most_splices` times,
+/// 300 seeded `touching-holes` cases, spliced by [`pinched`] (up to `most_splices` times,
 /// `cancel` as there), through both strategies, strict and lenient: the oracle must call
-/// every input valid and accept every result. With `strict_may_refuse`, strict mode may
-/// refuse inputs spliced more than once (counted).
-fn splice_cases(mix: u64, most_splices: usize, cancel: bool, strict_may_refuse: bool) -> Tally {
+/// every input valid and accept every result.
+fn splice_cases(mix: u64, most_splices: usize, cancel: bool) -> Tally {
     let mut t = Tally::default();
-    for seed in 0..150u64 {
+    for seed in 0..300u64 {
         let case = generate(
             Family::TouchingHoles,
             seed,
@@ -209,7 +207,6 @@ fn splice_cases(mix: u64, most_splices: usize, cancel: bool, strict_may_refuse: 
                             t.failures.push(format!("{what}: {:?}", verdict.failures()));
                         }
                     }
-                    Err(_) if strict_may_refuse && !lenient && made > 1 => t.strict_refused += 1,
                     Err(e) => t.failures.push(format!("{what}: refused: {e}")),
                 }
             }
@@ -220,15 +217,10 @@ fn splice_cases(mix: u64, most_splices: usize, cancel: bool, strict_may_refuse: 
 
 #[test]
 fn rings_spliced_where_they_touch_triangulate_validly() {
-    splice_cases(0x5EED, 6, false, false).assert_passed();
+    splice_cases(0x5EED, 6, false).assert_passed();
 }
 
 #[test]
 fn an_outer_ring_winding_twice_round_a_hole_that_cancels_a_turn_triangulates_validly() {
-    // Strict mode may refuse an outer ring winding twice round several holes: clipping
-    // meets a piece that turns clockwise and calls it a lobe winding the other way.
-    // Round one hole it must not.
-    let t = splice_cases(0xCA9CE1, 4, true, true);
-    eprintln!("strict mode refused {} runs", t.strict_refused);
-    t.assert_passed();
+    splice_cases(0xCA9CE1, 4, true).assert_passed();
 }

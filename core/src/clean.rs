@@ -465,15 +465,16 @@ fn orient_ring(cx: &mut Context, r: usize) {
         }
     }
     cx.rings[r].rightmost = best;
-    let pool = &cx.pool;
     // Visited once, the rightmost-lowest vertex is a strict turn (no repeats, no spikes,
     // and a split node is never rightmost-lowest), and that turn gives the winding. A ring
-    // touching itself there may turn at a visit whose edges belong to different lobes.
+    // touching itself there may turn at a visit whose edges belong to different lobes;
+    // where every edge there is walked both ways, the ring's net boundary decides.
     let counter_clockwise = if visits > 1 {
-        outermost_edge_arrives(cx, best)
+        outermost_edge_arrives(cx, best).or_else(|| net_boundary_counter_clockwise(cx, start))
     } else {
         None
     };
+    let pool = &cx.pool;
     let counter_clockwise = counter_clockwise.unwrap_or_else(|| {
         let turn = orient2d(
             pool.p(pool.prev(best)),
@@ -485,6 +486,73 @@ fn orient_ring(cx: &mut Context, r: usize) {
     if !counter_clockwise {
         cx.pool.reverse(start);
     }
+}
+
+/// Whether the ring through `start` winds counter-clockwise, read on its net boundary: its
+/// edges with every segment walked both ways cancelled (walls, spikes and cracks enclose
+/// nothing), at the rightmost-lowest position the rest reaches, by the outermost direction
+/// there that more edges arrive along than leave, or fewer (see [`outermost_edge_arrives`]).
+/// `None` when nothing is left (the ring encloses nothing). For rings whose extreme
+/// position lies on walls only, where the turns there say nothing. Exact.
+pub(crate) fn net_boundary_counter_clockwise(cx: &mut Context, start: NodeId) -> Option<bool> {
+    let mut edges = core::mem::take(&mut cx.net_edges);
+    edges.clear();
+    for n in cx.pool.ring(start) {
+        let (a, b) = (cx.pool.p(n), cx.pool.p(cx.pool.next(n)));
+        // (lower end, upper end, +1 from lower to upper, −1 back)
+        edges.push(if cmp_xy(a, b) == core::cmp::Ordering::Less {
+            (a, b, 1)
+        } else {
+            (b, a, -1)
+        });
+    }
+    edges.sort_unstable_by(|e, f| cmp_xy(e.0, f.0).then(cmp_xy(e.1, f.1)));
+    // sum the walks of each segment; keep those not cancelled
+    let mut kept = 0;
+    let mut i = 0;
+    while i < edges.len() {
+        let (a, b, mut net) = edges[i];
+        let mut j = i + 1;
+        while j < edges.len() && edges[j].0 == a && edges[j].1 == b {
+            net += edges[j].2;
+            j += 1;
+        }
+        if net != 0 {
+            edges[kept] = (a, b, net);
+            kept += 1;
+        }
+        i = j;
+    }
+    edges.truncate(kept);
+    // the rightmost-lowest end; an upper end is never left of its lower end
+    let x = edges.iter().map(|e| e.1).reduce(|b, p| {
+        if p.x > b.x || (p.x == b.x && p.y < b.y) {
+            p
+        } else {
+            b
+        }
+    });
+    let result = x.and_then(|x| {
+        // (far end, net arrivals at x along it)
+        let at_x = edges.iter().filter_map(|&(a, b, net)| {
+            if b == x {
+                Some((a, net))
+            } else if a == x {
+                Some((b, -net))
+            } else {
+                None
+            }
+        });
+        let along = |q: Point| -> i64 {
+            at_x.clone()
+                .filter(|&(f, _)| orient2d(x, q, f) == Orientation::Collinear)
+                .map(|(_, d)| d)
+                .sum()
+        };
+        lowest_net_arrives(x, at_x.clone().map(|(q, _)| q), along)
+    });
+    cx.net_edges = edges;
+    result
 }
 
 /// At the rightmost-lowest position X of a ring visiting it several times: every edge at X
@@ -506,18 +574,28 @@ fn outermost_edge_arrives(cx: &Context, at: NodeId) -> Option<bool> {
             })
             .sum()
     };
+    let ends = visits().flat_map(|n| [pool.p(pool.prev(n)), pool.p(pool.next(n))]);
+    lowest_net_arrives(x, ends, net)
+}
+
+/// Of the directions from `x` towards `ends`, all in the closed left half-plane (`x` is a
+/// rightmost-lowest position), the lowest whose `net` arrivals are not zero: whether they
+/// are more than zero. `None` when every direction nets zero.
+fn lowest_net_arrives(
+    x: Point,
+    ends: impl Iterator<Item = Point>,
+    net: impl Fn(Point) -> i64,
+) -> Option<bool> {
     let mut lowest: Option<(Point, i64)> = None;
-    for n in visits() {
-        for q in [pool.p(pool.prev(n)), pool.p(pool.next(n))] {
-            // within a half-plane, counter-clockwise of the lowest means lower still
-            let lower = lowest.map_or(true, |(e, _)| {
-                orient2d(x, e, q) == Orientation::CounterClockwise
-            });
-            if lower {
-                let d = net(q);
-                if d != 0 {
-                    lowest = Some((q, d));
-                }
+    for q in ends {
+        // within a half-plane, counter-clockwise of the lowest means lower still
+        let lower = lowest.map_or(true, |(e, _)| {
+            orient2d(x, e, q) == Orientation::CounterClockwise
+        });
+        if lower {
+            let d = net(q);
+            if d != 0 {
+                lowest = Some((q, d));
             }
         }
     }

@@ -363,8 +363,8 @@ fn retrace(cx: &mut Context) {
         if !turns && !flat {
             // Every visit there is the tip of a wall the ring runs out along and back
             // (joining rings leaves such walls where a hole cancelled a lobe): decide on
-            // the ring with its walls taken out.
-            hole = clockwise_without_walls(cx, n);
+            // the ring's net boundary.
+            hole = crate::clean::net_boundary_counter_clockwise(cx, n) == Some(false);
         }
         if cx.lenient && area != 0.0 {
             // With crossing edges the turn at one vertex may not tell the winding of the
@@ -388,53 +388,6 @@ fn retrace(cx: &mut Context) {
     for ring in &mut cx.rings[..old] {
         ring.alive = false;
     }
-}
-
-/// Whether the ring through `n`, with every wall it runs out along and straight back taken
-/// out (each step x → y → x made x), turns clockwise at its rightmost-lowest position, at
-/// one of its visits there. (`retrace` decides holes so where the ring's own extreme
-/// position is a wall's tip.)
-fn clockwise_without_walls(cx: &mut Context, n: NodeId) -> bool {
-    let mut walk = core::mem::take(&mut cx.touch_walk);
-    walk.clear();
-    for m in cx.pool.ring(n) {
-        let p = cx.pool.p(m);
-        if walk.len() >= 2 && walk[walk.len() - 2] == p {
-            walk.pop();
-        } else {
-            walk.push(p);
-        }
-    }
-    // the same where the walk closes: … x | x …, … x y | x … and … x | y x …
-    let mut lo = 0;
-    while walk.len() - lo >= 3 {
-        let top = walk.len() - 1;
-        if walk[top] == walk[lo] || walk[top - 1] == walk[lo] {
-            walk.pop();
-        } else if walk[top] == walk[lo + 1] {
-            walk.pop();
-            lo += 1;
-        } else {
-            break;
-        }
-    }
-    let ring = &walk[lo..];
-    let k = ring.len();
-    let mut best = 0;
-    for (i, p) in ring.iter().enumerate() {
-        let b = ring[best];
-        if p.x > b.x || (p.x == b.x && p.y < b.y) {
-            best = i;
-        }
-    }
-    let clockwise = k >= 3
-        && (0..k).any(|i| {
-            ring[i] == ring[best]
-                && orient2d(ring[(i + k - 1) % k], ring[i], ring[(i + 1) % k])
-                    == Orientation::Clockwise
-        });
-    cx.touch_walk = walk;
-    clockwise
 }
 
 /// The turn prev(n) → n → next(n).

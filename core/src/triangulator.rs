@@ -101,8 +101,9 @@ pub(crate) struct Context {
     /// Scratch of `touch`: the new successor of each node of one shared position.
     pub relink: Vec<(NodeId, NodeId)>,
     pub touch_ends: Vec<(crate::predicates::Point, NodeId, bool)>,
-    /// Scratch: one ring's positions with its walls taken out (see `touch::retrace`).
-    pub touch_walk: Vec<crate::predicates::Point>,
+    /// Scratch: one ring's edges with the segments walked both ways cancelled (see
+    /// `clean::net_boundary_counter_clockwise`).
+    pub net_edges: Vec<(crate::predicates::Point, crate::predicates::Point, i64)>,
     pub touch_nets: Vec<(crate::predicates::Point, i32)>,
     pub crossings: Vec<validate::Crossing>,
     pub sweep: SweepScratch,

@@ -8,10 +8,10 @@
 //! of holes, a hole and the outer ring an outer ring with a hole lobe (an "inverted hole").
 //! Splicing again gives rings through a position three or four times.
 //!
-//! For seeded cases with random splices, random ring starts and random windings of the
-//! whole input, the oracle must call the input valid, and both strategies, strict and
-//! lenient, must return a triangulation it accepts. (Lenient mode cuts such rings into
-//! lobes; strict mode keeps them whole: both routes are covered.)
+//! For seeded cases with random splices, random ring starts, random windings of the whole
+//! input and random quarter turns, the oracle must call the input valid, and both
+//! strategies, strict and lenient, must return a triangulation it accepts. (Lenient mode
+//! cuts such rings into lobes; strict mode keeps them whole: both routes are covered.)
 
 use polytri::{Options, Strategy, Triangulator};
 use polytri_oracle::{check_with, generate, CheckOptions, Family, Input, Nesting, Params};
@@ -124,6 +124,17 @@ fn pinched(rings: &[Ring], rng: &mut Rng, splices: usize, cancel: bool) -> (Vec<
         for ring in &mut rings {
             ring.reverse();
         }
+    }
+    // a quarter turn or more (exact): which vertex is rightmost-lowest changes
+    let quarter = rng.below(4);
+    for p in rings.iter_mut().flatten() {
+        let [x, y] = *p;
+        *p = match quarter {
+            0 => [x, y],
+            1 => [-y, x],
+            2 => [-x, -y],
+            _ => [y, -x],
+        };
     }
     (rings, made)
 }

@@ -94,6 +94,15 @@ pub enum Error {
         /// A vertex of the lobe that winds the other way.
         vertex: usize,
     },
+    /// A ring runs round part of the plane twice: it touches itself, and a lobe of it lies
+    /// inside the rest of it turning the same way, so the winding number there is 2 (strict
+    /// mode only).
+    RingWindsTwice {
+        /// The ring.
+        ring: usize,
+        /// A vertex where the lobe touches the rest of the ring.
+        vertex: usize,
+    },
     /// polytri failed where it should not have: **this is a bug, please report it** with the
     /// input at <https://github.com/polytri/polytri/issues>.
     Internal {
@@ -156,6 +165,10 @@ impl fmt::Display for Error {
             Error::LobesWindOpposite { ring, vertex } => write!(
                 f,
                 "ring {ring} winds both ways: the lobe at vertex {vertex} turns the other way round than the rest (a figure eight)"
+            ),
+            Error::RingWindsTwice { ring, vertex } => write!(
+                f,
+                "ring {ring} winds twice: the lobe touching the rest of it at vertex {vertex} lies inside the rest and turns the same way"
             ),
             Error::Internal { stage } => write!(
                 f,

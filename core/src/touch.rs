@@ -20,8 +20,11 @@ use crate::nest::same_ray;
 use crate::pool::NodeId;
 use core::cmp::Ordering;
 
-use crate::predicates::{approx_cross, cmp_around, cmp_xy, orient2d, Orientation, Point};
+use crate::predicates::{
+    approx_cross, cmp_around, cmp_xy, on_segment, orient2d, Orientation, Point,
+};
 use crate::triangulator::{Context, Ring};
+use crate::Error;
 
 /// The end of the run of `cx.shared` from `i` on whose nodes share one position.
 pub(crate) fn same_position_end(cx: &Context, i: usize) -> usize {
@@ -50,6 +53,99 @@ pub(crate) fn join(cx: &mut Context) -> usize {
         .iter()
         .filter(|r| r.alive && r.depth % 2 == 1)
         .count()
+}
+
+/// Strict mode, after [`join`]: refuses a ring that winds twice round part of the plane.
+///
+/// Nesting checked whole rings; joining cuts a ring touching itself into cycles, and those
+/// must nest as outer and hole boundaries do. Two cycles of one ring that meet at a
+/// position and turn the same way must lie outside each other: one inside the other is a
+/// lobe inside the rest of the ring turning the same way, where the winding number is 2.
+/// (Lobes turning the other way are holes; another ring cancelling a lobe pairs with it
+/// into walls, which enclose nothing.) Each pair is decided by crossing parity at a vertex
+/// of one off the other's boundary. The scans are bounded by a budget linear in the nodes;
+/// past it the rest goes unchecked.
+pub(crate) fn refuse_rings_winding_twice(cx: &mut Context) -> Result<(), Error> {
+    if cx.lenient || cx.shared.is_empty() {
+        return Ok(());
+    }
+    // (ring, ring, a node where they meet), each pair once
+    let mut pairs = core::mem::take(&mut cx.lobe_pairs);
+    pairs.clear();
+    let mut i = 0;
+    while i < cx.shared.len() {
+        let j = same_position_end(cx, i);
+        for a in i..j {
+            let na = cx.shared[a];
+            for &nb in &cx.shared[a + 1..j] {
+                if !live(cx, na) || !live(cx, nb) {
+                    continue;
+                }
+                let (ra, rb) = (cx.pool.get(na).ring, cx.pool.get(nb).ring);
+                let (a_ring, b_ring) = (cx.rings[ra as usize], cx.rings[rb as usize]);
+                if ra != rb && a_ring.input == b_ring.input && a_ring.depth == b_ring.depth {
+                    pairs.push((ra.min(rb), ra.max(rb), na));
+                }
+            }
+        }
+        i = j;
+    }
+    pairs.sort_unstable_by_key(|&(c, d, _)| (c, d));
+    pairs.dedup_by_key(|&mut (c, d, _)| (c, d));
+    let mut result = Ok(());
+    let mut budget = 16 * cx.pool.len() + 4096;
+    'pairs: for &(c, d, at) in &pairs {
+        for (inner, outer) in [(c as usize, d as usize), (d as usize, c as usize)] {
+            match lies_inside(cx, inner, outer, &mut budget) {
+                Some(true) => {
+                    result = Err(Error::RingWindsTwice {
+                        ring: cx.rings[inner].input as usize,
+                        vertex: cx.pool.get(at).vertex as usize,
+                    });
+                    break 'pairs;
+                }
+                Some(false) => {}
+                None => break 'pairs,
+            }
+        }
+    }
+    cx.lobe_pairs = pairs;
+    result
+}
+
+/// Whether ring `inner` lies inside ring `outer`, by crossing parity at the first vertex of
+/// `inner` off `outer`'s boundary (`Some(false)` when there is none); `None` when the
+/// `budget` of edge visits runs out first.
+fn lies_inside(cx: &Context, inner: usize, outer: usize, budget: &mut usize) -> Option<bool> {
+    let pool = &cx.pool;
+    let outer_len = cx.rings[outer].len as usize;
+    for n in pool.ring(cx.rings[inner].start) {
+        *budget = budget.checked_sub(outer_len)?;
+        let p = pool.p(n);
+        let mut odd = false;
+        let mut on = false;
+        for m in pool.ring(cx.rings[outer].start) {
+            let (a, b) = (pool.p(m), pool.p(pool.next(m)));
+            if on_segment(a, b, p) {
+                on = true;
+                break;
+            }
+            // the ray from p towards +x, half-open in y
+            if (a.y > p.y) != (b.y > p.y) {
+                let side = orient2d(a, b, p);
+                let up = b.y > a.y;
+                if (up && side == Orientation::CounterClockwise)
+                    || (!up && side == Orientation::Clockwise)
+                {
+                    odd = !odd;
+                }
+            }
+        }
+        if !on {
+            return Some(odd);
+        }
+    }
+    Some(false)
 }
 
 /// Whether node `n` is part of the triangulation's input still.

@@ -104,6 +104,8 @@ pub(crate) struct Context {
     /// Scratch: one ring's edges with the segments walked both ways cancelled (see
     /// `clean::net_boundary_counter_clockwise`).
     pub net_edges: Vec<(crate::predicates::Point, crate::predicates::Point, i64)>,
+    /// Scratch: pairs of rings one ring was cut into (see `touch::refuse_rings_winding_twice`).
+    pub lobe_pairs: Vec<(u32, u32, NodeId)>,
     pub touch_nets: Vec<(crate::predicates::Point, i32)>,
     pub crossings: Vec<validate::Crossing>,
     pub sweep: SweepScratch,
@@ -245,6 +247,7 @@ fn prepare<T: Coord>(
         cx.area = signed_area(cx);
     }
     let holes = touch::join(cx);
+    touch::refuse_rings_winding_twice(cx)?;
     if crossing {
         cx.starts.clear();
         cx.starts

@@ -552,6 +552,49 @@ fn lobes_winding_opposite_ways_along_a_wall_are_refused() {
     }
 }
 
+/// A quadrilateral with a wall from B down to C and a triangle C D E inside it turning the
+/// same way, one ring (precision fuzz target, seed 8282): the winding number in the
+/// triangle is 2. Strict mode refuses it in every rotation and start; the same lobe turned
+/// the other way is a hole, which it triangulates (quadrilateral minus triangle).
+#[test]
+fn a_lobe_inside_its_ring_turning_the_same_way_is_refused() {
+    let (a, b, c, d, e, f, g) = (
+        [6.0, 13.0],
+        [2.0, 10.0],
+        [2.0, 9.0],
+        [4.0, 8.0],
+        [3.0, 9.0],
+        [1.0, 9.0],
+        [2.0, 0.0],
+    );
+    let same_way = [a, b, c, d, e, c, b, f, g];
+    let other_way = [a, b, c, e, d, c, b, f, g];
+    for rotation in 0..4 {
+        let turn = |ring: &[[f64; 2]]| -> Vec<[f64; 2]> {
+            ring.iter()
+                .map(|&p| (0..rotation).fold(p, |[x, y], _| [-y, x]))
+                .collect()
+        };
+        for start in 0..same_way.len() {
+            let mut twice = turn(&same_way);
+            twice.rotate_left(start);
+            let mut hole = turn(&other_way);
+            hole.rotate_left(start);
+            for strategy in [Strategy::Fast, Strategy::Quality] {
+                let what = format!("rotation {rotation}, start {start}, {strategy:?}");
+                match tri_f64(&twice, &[0], strict(strategy)) {
+                    Err(Error::RingWindsTwice { ring: 0, vertex }) => {
+                        assert!(vertex < twice.len(), "{what}")
+                    }
+                    other => panic!("{what}: {other:?}"),
+                }
+                // 4 + 3 corners and one hole: 4 + 3 + 2 - 2 triangles
+                assert_eq!(tri_f64(&hole, &[0], strict(strategy)), Ok(7), "{what}");
+            }
+        }
+    }
+}
+
 /// Two triangles pinched at their shared rightmost vertex (3, 1), one ring. The turn at a
 /// visit of the rightmost vertex may pair an edge of one lobe with an edge of the other,
 /// so it cannot tell the winding; the lowest edge there can. Found by `polytri precision`

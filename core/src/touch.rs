@@ -63,27 +63,37 @@ pub(crate) fn join(cx: &mut Context) -> usize {
 /// lobe inside the rest of the ring turning the same way, where the winding number is 2.
 /// (Lobes turning the other way are holes; another ring cancelling a lobe pairs with it
 /// into walls, which enclose nothing.) Each pair is decided by crossing parity at a vertex
-/// of one off the other's boundary. The scans are bounded by a budget linear in the nodes;
-/// past it the rest goes unchecked.
+/// of one off the other's boundary. The pairs and the scans are bounded by budgets linear
+/// in the nodes; past them the rest goes unchecked.
 pub(crate) fn refuse_rings_winding_twice(cx: &mut Context) -> Result<(), Error> {
     if cx.lenient || cx.shared.is_empty() {
         return Ok(());
     }
-    // (ring, ring, a node where they meet), each pair once
+    // (ring, ring, a node where they meet), each pair once; at most `limit` of them
     let mut pairs = core::mem::take(&mut cx.lobe_pairs);
+    let mut meet = core::mem::take(&mut cx.lobe_meet);
     pairs.clear();
+    let limit = 4 * cx.pool.len() + 1024;
     let mut i = 0;
-    while i < cx.shared.len() {
+    while i < cx.shared.len() && pairs.len() < limit {
         let j = same_position_end(cx, i);
-        for a in i..j {
-            let na = cx.shared[a];
-            for &nb in &cx.shared[a + 1..j] {
-                if !live(cx, na) || !live(cx, nb) {
-                    continue;
-                }
-                let (ra, rb) = (cx.pool.get(na).ring, cx.pool.get(nb).ring);
-                let (a_ring, b_ring) = (cx.rings[ra as usize], cx.rings[rb as usize]);
-                if ra != rb && a_ring.input == b_ring.input && a_ring.depth == b_ring.depth {
+        // the live rings through this position, by (input ring, depth), each once
+        meet.clear();
+        for &n in &cx.shared[i..j] {
+            if live(cx, n) {
+                let ring = cx.pool.get(n).ring;
+                let r = cx.rings[ring as usize];
+                meet.push((r.input, r.depth, ring, n));
+            }
+        }
+        meet.sort_unstable_by_key(|&(input, depth, ring, _)| (input, depth, ring));
+        meet.dedup_by_key(|m| m.2);
+        for (k, &(input, depth, ra, na)) in meet.iter().enumerate() {
+            let same = meet[k + 1..]
+                .iter()
+                .take_while(|m| m.0 == input && m.1 == depth);
+            for &(_, _, rb, _) in same {
+                if pairs.len() < limit {
                     pairs.push((ra.min(rb), ra.max(rb), na));
                 }
             }
@@ -110,6 +120,7 @@ pub(crate) fn refuse_rings_winding_twice(cx: &mut Context) -> Result<(), Error> 
         }
     }
     cx.lobe_pairs = pairs;
+    cx.lobe_meet = meet;
     result
 }
 

@@ -106,6 +106,8 @@ pub(crate) struct Context {
     pub net_edges: Vec<(crate::predicates::Point, crate::predicates::Point, i64)>,
     /// Scratch: pairs of rings one ring was cut into (see `touch::refuse_rings_winding_twice`).
     pub lobe_pairs: Vec<(u32, u32, NodeId)>,
+    /// Scratch: the rings through one position, with their input ring and depth.
+    pub lobe_meet: Vec<(u32, u32, u32, NodeId)>,
     pub touch_nets: Vec<(crate::predicates::Point, i32)>,
     pub crossings: Vec<validate::Crossing>,
     pub sweep: SweepScratch,

@@ -25,14 +25,19 @@
 //! cross between them. With no crossing left anywhere, the rings can be drawn apart into
 //! disjoint simple curves, and nesting them by containment is the even–odd rule.
 //!
-//! A re-paired ring falls into one or more cycles; each new cycle becomes a new ring entry
+//! The cycles that gives may still pass a position twice where they only touch
+//! themselves. Each is then cut in two there, by swapping the two visits' arriving edges,
+//! wherever the swapped chords cross none there: so a lobe hanging on a wall comes off it,
+//! and no cycle's rightmost vertex is the tip of a wall it runs out along and back (whose
+//! turn would say nothing). Cutting tries the visits in pairs, so a position passed more
+//! than [`MOST_VISITS_CUT`] times by one ring is not cut. Every cycle becomes a ring entry
 //! with the same input ring number, and `touch` joins them again properly once nesting has
 //! turned them. Input with crossing edges is left whole: it has no region to keep, and its
 //! repairs were tuned on whole rings.
 //!
-//! Strict mode keeps rings whole too: a ring whose lobes turn opposite ways is refused
-//! there (as `Error::LobesWindOpposite`, or as rings crossing at a vertex), cancelled lobe
-//! or not.
+//! Strict mode keeps rings whole: a ring whose lobes turn opposite ways is refused there
+//! (as `Error::LobesWindOpposite`, or as rings crossing at a vertex), cancelled lobe or
+//! not, and one winding twice as `Error::RingWindsTwice` (see `touch`).
 
 use crate::pool::NodeId;
 use crate::predicates::{cmp_around, cmp_xy, Point};

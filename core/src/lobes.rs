@@ -37,7 +37,8 @@
 //!
 //! Strict mode keeps rings whole: a ring whose lobes turn opposite ways is refused there
 //! (as `Error::LobesWindOpposite`, or as rings crossing at a vertex), cancelled lobe or
-//! not, and one winding twice as `Error::RingWindsTwice` (see `touch`).
+//! not, and a lobe inside the rest turning the same way, where no other ring cancels it,
+//! as `Error::RingWindsTwice` (see `touch`).
 
 use crate::pool::NodeId;
 use crate::predicates::{cmp_around, cmp_xy, Point};

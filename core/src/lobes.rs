@@ -106,6 +106,8 @@ pub(crate) fn split(cx: &mut Context) -> bool {
         s.group.resize(cx.pool.len(), NONE);
         s.visits.clear();
         s.visits.resize(cx.shared.len(), NONE);
+        s.cycle.clear();
+        s.cycle.resize(cx.pool.len(), NONE);
         let mut i = 0;
         while i < cx.shared.len() {
             let j = crate::touch::same_position_end(cx, i);
@@ -168,8 +170,8 @@ fn split_ring(cx: &mut Context, s: &mut LobeScratch, r: usize) -> bool {
     }
     let mut changed = !s.pairs.is_empty();
     // 2. label the cycles, then cut each apart where it passes a position twice
-    s.cycle.clear();
-    s.cycle.resize(cx.pool.len(), NONE);
+    // (`split` sized `s.cycle` once, all `NONE`; only this ring's nodes are set below,
+    // and reset before returning)
     s.labels = 0;
     for k in 0..s.walk.len() {
         let v = s.walk[k];
@@ -181,6 +183,9 @@ fn split_ring(cx: &mut Context, s: &mut LobeScratch, r: usize) -> bool {
     for k in 0..s.pinches.len() {
         let g = s.pinches[k] as usize;
         changed |= cut(cx, s, g, r32);
+    }
+    for &w in &s.walk {
+        s.cycle[w.idx()] = NONE;
     }
     if !changed {
         return false;

@@ -13,7 +13,10 @@
 //! Figure eights whose lobes turn opposite ways, one lobe cancelled by another ring, are
 //! valid too; there only lenient mode is held to a result (strict mode may refuse them).
 
-use polytri::{Nesting as TriNesting, Options, Strategy, Triangulator};
+mod common;
+
+use common::run;
+use polytri::Strategy;
 use polytri_oracle::{check_with, CheckOptions, Input, Nesting};
 
 type Ring = Vec<[f64; 2]>;
@@ -331,22 +334,6 @@ fn variants(rings: &[Ring]) -> impl Iterator<Item = (String, Input)> + '_ {
                 )
             })
         })
-}
-
-fn run(input: &Input, strategy: Strategy, lenient: bool) -> Result<Vec<[u32; 3]>, String> {
-    let nesting = match input.nesting {
-        Nesting::FirstIsOuter => TriNesting::FirstIsOuter,
-        _ => TriNesting::Auto,
-    };
-    let options = Options::default()
-        .with_strategy(strategy)
-        .with_nesting(nesting)
-        .with_lenient(lenient);
-    let mut out = Vec::new();
-    Triangulator::<f64>::new()
-        .triangulate(&input.vertices, &input.ring_starts, &options, &mut out)
-        .map(|_| out)
-        .map_err(|e| e.to_string())
 }
 
 /// Runs every variant of `rings` in both strategies, strict and lenient, into `failures`:

@@ -13,7 +13,10 @@
 //! strategies, strict and lenient, must return a triangulation it accepts. (Lenient mode
 //! cuts such rings into lobes; strict mode keeps them whole: both routes are covered.)
 
-use polytri::{Options, Strategy, Triangulator};
+mod common;
+
+use common::run;
+use polytri::Strategy;
 use polytri_oracle::{check_with, generate, CheckOptions, Family, Input, Nesting, Params};
 
 type Ring = Vec<[f64; 2]>;
@@ -137,17 +140,6 @@ fn pinched(rings: &[Ring], rng: &mut Rng, splices: usize, cancel: bool) -> (Vec<
         };
     }
     (rings, made)
-}
-
-fn run(input: &Input, strategy: Strategy, lenient: bool) -> Result<Vec<[u32; 3]>, String> {
-    let options = Options::default()
-        .with_strategy(strategy)
-        .with_lenient(lenient);
-    let mut out = Vec::new();
-    Triangulator::<f64>::new()
-        .triangulate(&input.vertices, &input.ring_starts, &options, &mut out)
-        .map(|_| out)
-        .map_err(|e| e.to_string())
 }
 
 /// What [`splice_cases`] saw.

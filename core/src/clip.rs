@@ -685,6 +685,7 @@ impl<'a> Clipper<'a> {
     }
 
     /// Unlinks `n`, keeping the counts.
+    #[inline(always)]
     fn unlink(&mut self, n: NodeId) {
         if self.cx.pool.get(n).reflex {
             self.reflex_count -= 1;
@@ -755,6 +756,7 @@ impl<'a> Clipper<'a> {
     }
 
     /// Records whether live node `n` is reflex, keeping the counts and the index.
+    #[inline(always)]
     fn set_reflex(&mut self, n: NodeId, reflex: bool) {
         let node = self.cx.pool.get_mut(n);
         // a reflex tip is no ear (the fast walk steps over it); a convex one was just

@@ -1,6 +1,7 @@
 //! Runs polytri on one rings or shapes JSON file many times, for a profiler:
-//! `cargo run --release -p polytri --example profile -- FILE [RUNS] [fast|lenient|quality|check]`.
-//! Shapes go one polygon at a time (first ring outer), as `polytri bench` gives them.
+//! `cargo run --release -p polytri --example profile -- FILE [RUNS] [fast|lenient|quality|check] [first|auto]`.
+//! Shapes go one polygon at a time (first ring outer, unless `auto` asks for nesting by
+//! containment), as `polytri bench` gives them.
 
 use polytri::{Nesting, Options, Strategy, Triangulator};
 
@@ -13,6 +14,11 @@ fn main() {
         .expect("usage: profile FILE [RUNS] [fast|lenient|quality|check]");
     let runs: usize = args.get(2).map_or(100, |r| r.parse().expect("RUNS"));
     let mode = args.get(3).map_or("lenient", String::as_str);
+    let nesting = match args.get(4).map_or("first", String::as_str) {
+        "first" => Nesting::FirstIsOuter,
+        "auto" => Nesting::Auto,
+        other => panic!("unknown nesting {other}"),
+    };
     let text = std::fs::read_to_string(path).expect("readable file");
     let value: serde_json::Value = serde_json::from_str(&text).expect("JSON");
     let shapes: Vec<Rings> = if value[0][0][0].is_array() {
@@ -32,7 +38,7 @@ fn main() {
             (vertices, starts)
         })
         .collect();
-    let options = Options::new().with_nesting(Nesting::FirstIsOuter);
+    let options = Options::new().with_nesting(nesting);
     let options = match mode {
         // `check` takes only the nesting convention
         "fast" | "check" => options,
@@ -47,8 +53,7 @@ fn main() {
     for _ in 0..runs {
         for (vertices, starts) in &flat {
             if mode == "check" {
-                triangles +=
-                    usize::from(tri.check(vertices, starts, Nesting::FirstIsOuter).is_ok());
+                triangles += usize::from(tri.check(vertices, starts, nesting).is_ok());
                 continue;
             }
             triangles += tri

@@ -23,10 +23,11 @@
 
 use crate::bridge::compare_hits;
 use crate::pool::NodeId;
-use crate::predicates::{cmp_around, left_of, on_segment, orient2d, Orientation, Point};
+use crate::predicates::{cmp_around, cmp_xy, left_of, on_segment, orient2d, Orientation, Point};
 use crate::report::{DropReason, Dropped, RepairKind};
 use crate::triangulator::Context;
 use crate::{Error, Nesting};
+use core::cmp::Ordering;
 
 /// Decides every live ring's depth and turns holes clockwise.
 pub(crate) fn nest(cx: &mut Context, nesting: Nesting) -> Result<(), Error> {
@@ -176,6 +177,8 @@ pub(crate) fn skip_ring(cx: &mut Context, r: usize) {
 /// on reaches further right than the ring asking, so it is done by then.
 fn compute_depths(cx: &mut Context) -> Result<(), Error> {
     index_all_edges(cx);
+    cx.ring_slot.clear();
+    cx.ring_slot.resize(cx.rings.len(), NO_SLOT);
     cx.depth_known.clear();
     cx.depth_known.resize(cx.rings.len(), false);
     cx.overlaps.clear();
@@ -241,6 +244,24 @@ pub(crate) fn index_all_edges(cx: &mut Context) {
 /// at one of b's input vertices that cleaning dropped.
 fn depth_of(cx: &mut Context, b: usize) -> u32 {
     let first = cx.rings[b].rightmost;
+    if nodes_at(cx, cx.pool.p(first)) > FEW_AT_A_HUB {
+        // Many rings meet there, and deciding b there costs time in their number, for
+        // each of them (petals or slices round one point, say): a vertex of b where few
+        // meet decides as well, if one comes soon (any vertex does, unless b's edges
+        // there run along the rings through it).
+        let mut v = cx.pool.next(first);
+        for _ in 0..HUB_DETOUR {
+            if v == first {
+                break;
+            }
+            if nodes_at(cx, cx.pool.p(v)) <= FEW_AT_A_HUB {
+                if let Some(depth) = depth_at(cx, b, v) {
+                    return depth;
+                }
+            }
+            v = cx.pool.next(v);
+        }
+    }
     let mut v = first;
     loop {
         if let Some(depth) = depth_at(cx, b, v) {
@@ -288,13 +309,19 @@ fn depth_by_dropped(cx: &mut Context, b: usize) -> u32 {
             break;
         }
         let p = cx.pool.nodes[i].p;
-        rings_through(cx, b, p, &mut through);
+        let mut slot = core::mem::take(&mut cx.ring_slot);
+        rings_through(cx, b, p, &mut through, &mut slot);
+        clear_slots(&through, &mut slot);
+        through.sort_unstable();
         counts.clear();
         counts.resize(cx.order.len(), 0);
-        winding_number(cx, b, p, &mut counts);
+        set_slots(&cx.order, &mut slot);
+        winding_number(cx, b, p, &mut counts, &slot);
+        clear_slots(&cx.order, &mut slot);
+        cx.ring_slot = slot;
         let mut k = 0;
         cx.order.retain(|q| {
-            let on_q = through.contains(q)
+            let on_q = through.binary_search(q).is_ok()
                 || dropped
                     .iter()
                     .any(|&(r, a, c)| r == *q && on_segment(a, c, p));
@@ -321,6 +348,22 @@ fn depth_by_dropped(cx: &mut Context, b: usize) -> u32 {
     depth + cx.order.len() as u32
 }
 
+/// Past this many nodes at a ring's rightmost position, [`depth_of`] looks for a vertex
+/// of the ring where at most this many lie, and decides there.
+const FEW_AT_A_HUB: usize = 8;
+
+/// How many vertices of the ring [`depth_of`] looks at for one no other node shares.
+const HUB_DETOUR: usize = 16;
+
+/// How many nodes lie at position `p`, when several do (`cx.shared` lists those, sorted
+/// by position); 0 when at most one does.
+fn nodes_at(cx: &Context, p: Point) -> usize {
+    let (pool, shared) = (&cx.pool, &cx.shared);
+    let from = shared.partition_point(|&n| cmp_xy(pool.p(n), p) == Ordering::Less);
+    let rest = &shared[from..];
+    rest.partition_point(|&n| cmp_xy(pool.p(n), p) == Ordering::Equal)
+}
+
 /// The pool indices of the nodes loaded for ring `r`, in input order; none for a ring
 /// split into lobes (its loaded nodes now lie on several rings).
 fn loaded(cx: &Context, r: usize) -> core::ops::RangeInclusive<usize> {
@@ -333,8 +376,14 @@ fn loaded(cx: &Context, r: usize) -> core::ops::RangeInclusive<usize> {
     first..=(first + count as usize).saturating_sub(1).max(first)
 }
 
-/// The live rings other than `b` with an edge through `p`, into `out`.
-fn rings_through(cx: &Context, b: usize, p: Point, out: &mut Vec<u32>) {
+/// No place: the ring does not pass the position being decided (see `cx.ring_slot`).
+const NO_SLOT: u32 = u32::MAX;
+
+/// The live rings other than `b` with an edge through `p`, into `out`, each once, in the
+/// order the grid lists them. `slot` must hold [`NO_SLOT`] for every ring; it is left
+/// holding each listed ring's place in `out` (see [`clear_slots`]), so that a position
+/// many rings pass costs time linear in them.
+fn rings_through(cx: &Context, b: usize, p: Point, out: &mut Vec<u32>, slot: &mut [u32]) {
     out.clear();
     for n in cx.edge_grid.query(p, p) {
         let node = cx.pool.get(n);
@@ -342,9 +391,24 @@ fn rings_through(cx: &Context, b: usize, p: Point, out: &mut Vec<u32>) {
         if ring as usize == b || node.removed || !cx.rings[ring as usize].alive {
             continue;
         }
-        if on_segment(node.p, cx.pool.p(node.next), p) && !out.contains(&ring) {
+        if slot[ring as usize] == NO_SLOT && on_segment(node.p, cx.pool.p(node.next), p) {
+            slot[ring as usize] = out.len() as u32;
             out.push(ring);
         }
+    }
+}
+
+/// Gives each ring of `rings` its place in it in `slot`.
+fn set_slots(rings: &[u32], slot: &mut [u32]) {
+    for (k, &r) in rings.iter().enumerate() {
+        slot[r as usize] = k as u32;
+    }
+}
+
+/// Takes the places of `rings` out of `slot` again.
+fn clear_slots(rings: &[u32], slot: &mut [u32]) {
+    for &r in rings {
+        slot[r as usize] = NO_SLOT;
     }
 }
 
@@ -362,31 +426,51 @@ fn decide_at(cx: &mut Context, b: usize, v: NodeId) -> u32 {
     let pv = cx.pool.p(v);
     // Rings passing through V: decided locally, their windings kept apart.
     let mut touching = core::mem::take(&mut cx.order);
-    rings_through(cx, b, pv, &mut touching);
+    let mut slot = core::mem::take(&mut cx.ring_slot);
+    rings_through(cx, b, pv, &mut touching, &mut slot);
     cx.order = touching;
     if cx.order.is_empty() && v == cx.rings[b].rightmost && cx.crossings.is_empty() {
+        cx.ring_slot = slot;
         if let Some(depth) = depth_from_nearest(cx, b, pv) {
             return depth;
         }
+        slot = core::mem::take(&mut cx.ring_slot);
     }
     let mut beyond = core::mem::take(&mut cx.touch_winding);
     beyond.clear();
     beyond.resize(cx.order.len(), 0);
-    let (winding, ray) = winding_number(cx, b, pv, &mut beyond);
+    let (winding, ray) = winding_number(cx, b, pv, &mut beyond, &slot);
+    // the touching rings' edges through V, turned, grouped by ring
+    let mut edges = core::mem::take(&mut cx.hub_edges);
+    edges.clear();
+    for n in cx.edge_grid.query(pv, pv) {
+        let node = cx.pool.get(n);
+        let (k, next) = (slot[node.ring as usize], cx.pool.p(node.next));
+        if k != NO_SLOT && !node.removed && on_segment(node.p, next, pv) {
+            edges.push((k, ray.turn(node.p), ray.turn(next)));
+        }
+    }
+    edges.sort_unstable_by_key(|e| e.0);
+    clear_slots(&cx.order, &mut slot);
+    cx.ring_slot = slot;
     let mut depth = winding.max(0) as u32;
     let mut open = 0;
+    let mut from = 0;
     for (k, &base) in beyond.iter().enumerate() {
         let r = cx.order[k];
-        match locally_inside(cx, v, r as usize, ray, base) {
+        let to = from + edges[from..].partition_point(|e| e.0 == k as u32);
+        match locally_inside(cx, v, &edges[from..to], ray, base) {
             Some(inside) => depth += u32::from(inside),
             None => {
                 cx.order[open] = r;
                 open += 1;
             }
         }
+        from = to;
     }
     cx.order.truncate(open);
     cx.touch_winding = beyond;
+    cx.hub_edges = edges;
     depth
 }
 
@@ -565,7 +649,13 @@ impl Nearest {
 /// around `pv`, by a ray along the grid row or column with the fewest cells to the edge,
 /// and that ray. The crossings with the edges of `cx.order[k]` go to `touching[k]`
 /// instead (edges through `pv` cross nothing).
-fn winding_number(cx: &Context, b: usize, pv: Point, touching: &mut [i64]) -> (i64, Ray) {
+fn winding_number(
+    cx: &Context,
+    b: usize,
+    pv: Point,
+    touching: &mut [i64],
+    slot: &[u32],
+) -> (i64, Ray) {
     let grid = &cx.edge_grid;
     let (row, column) = (grid.row(pv.y), grid.column(pv.x));
     let (nx, ny) = (grid.columns(), grid.rows());
@@ -600,9 +690,9 @@ fn winding_number(cx: &Context, b: usize, pv: Point, touching: &mut [i64]) -> (i
             return;
         }
         let step = crossing(ray.turn(p), ray.turn(next), v);
-        match cx.order.iter().position(|&r| r == ring) {
-            Some(k) => touching[k] += step,
-            None => winding += step,
+        match slot[ring as usize] {
+            NO_SLOT => winding += step,
+            k => touching[k as usize] += step,
         }
     };
     for &n in grid.long() {
@@ -674,7 +764,8 @@ fn crossing(a: Point, b: Point, v: Point) -> i64 {
 }
 
 /// Whether ring `b` lies inside ring `r`, which passes through the position of b's node
-/// `v`, judged by the winding number of `r` next to v, where it is exact however often `r`
+/// `v` along the edges `r_edges` (their ends turned by `ray`; `decide_at` gathers them
+/// for every ring there at once), judged by the winding number of `r` next to v, where it is exact however often `r`
 /// passes through v (a ring touching itself there has several corners at v, none of which
 /// alone tells):
 ///
@@ -689,18 +780,17 @@ fn crossing(a: Point, b: Point, v: Point) -> i64 {
 /// counts them. From d₀ counter-clockwise, every ray from v along an edge of `r` changes
 /// the winding number by one: +1 where the edge leaves v (its left side, the inside,
 /// follows), −1 where it arrives.
-fn locally_inside(cx: &Context, v: NodeId, r: usize, ray: Ray, base: i64) -> Option<bool> {
+fn locally_inside(
+    cx: &Context,
+    v: NodeId,
+    r_edges: &[(u32, Point, Point)],
+    ray: Ray,
+    base: i64,
+) -> Option<bool> {
     let pv = cx.pool.p(v);
     let o = ray.turn(pv);
     // r's edges through v, as turned points: the edge's start and end
-    let edges = || {
-        cx.edge_grid.query(pv, pv).filter_map(move |n| {
-            let node = cx.pool.get(n);
-            let next = cx.pool.p(node.next);
-            (node.ring as usize == r && !node.removed && on_segment(node.p, next, pv))
-                .then(|| (ray.turn(node.p), ray.turn(next)))
-        })
-    };
+    let edges = || r_edges.iter().map(|&(_, from, to)| (from, to));
     let along_r = |d: Point| {
         edges().any(|(from, to)| [from, to].into_iter().any(|e| e != o && on_ray(o, e, d)))
     };

@@ -88,14 +88,15 @@ pub(crate) fn refuse_rings_winding_twice(cx: &mut Context) -> Result<(), Error> 
         }
         meet.sort_unstable_by_key(|&(input, depth, ring, _)| (input, depth, ring));
         meet.dedup_by_key(|m| m.2);
-        for (k, &(input, depth, ra, na)) in meet.iter().enumerate() {
+        'meet: for (k, &(input, depth, ra, na)) in meet.iter().enumerate() {
             let same = meet[k + 1..]
                 .iter()
                 .take_while(|m| m.0 == input && m.1 == depth);
             for &(_, _, rb, _) in same {
-                if pairs.len() < limit {
-                    pairs.push((ra.min(rb), ra.max(rb), na));
+                if pairs.len() >= limit {
+                    break 'meet;
                 }
+                pairs.push((ra.min(rb), ra.max(rb), na));
             }
         }
         i = j;
@@ -171,6 +172,43 @@ fn live(cx: &Context, n: NodeId) -> bool {
 fn relink(cx: &mut Context, i: usize, j: usize) {
     cx.relink.clear();
     let o = cx.pool.p(cx.shared[i]);
+    let doubled = if j - i > FEW_AT_ONE_POSITION && sort_ends(cx, i, j) {
+        relink_sorted(cx, i, j)
+    } else {
+        relink_by_pairs(cx, i, j, o);
+        any_doubled(cx, i, j)
+    };
+    // one-to-one? every successor used once
+    let pairs = &mut cx.relink;
+    pairs.sort_unstable_by_key(|&(_, t)| t);
+    let conflict = pairs.windows(2).any(|w| w[0].1 == w[1].1);
+    // (lenient mode on crossing input keeps the rings as they are there: its repairs
+    // were tuned so)
+    let exact = !cx.lenient || cx.crossings.is_empty();
+    if exact && (conflict || doubled) {
+        // Edges of one direction need ordering: the rule above sends an edge straight
+        // back first, which closes a wall, but a crack into the region is walked along.
+        if !relink_bundles(cx, i, j) {
+            return;
+        }
+    } else if conflict {
+        return;
+    }
+    for k in 0..cx.relink.len() {
+        let (n, target) = cx.relink[k];
+        cx.pool.get_mut(n).next = target;
+        cx.pool.get_mut(target).prev = n;
+        cx.pool.touch(n);
+    }
+}
+
+/// Up to this many nodes at one position, [`relink`] compares every edge arriving there
+/// with every edge leaving; past it, it sorts them by direction first.
+const FEW_AT_ONE_POSITION: usize = 8;
+
+/// The face-walk rule at the position of `cx.shared[i..j]`, edge by edge: each arriving
+/// edge against every leaving one (quadratic in the nodes there, fastest for a few).
+fn relink_by_pairs(cx: &mut Context, i: usize, j: usize, o: Point) {
     for a in i..j {
         let n = cx.shared[a];
         if !live(cx, n) {
@@ -193,28 +231,63 @@ fn relink(cx: &mut Context, i: usize, j: usize) {
             cx.relink.push((n, target));
         }
     }
-    // one-to-one? every successor used once
-    let pairs = &mut cx.relink;
-    pairs.sort_unstable_by_key(|&(_, t)| t);
-    let conflict = pairs.windows(2).any(|w| w[0].1 == w[1].1);
-    // (lenient mode on crossing input keeps the rings as they are there: its repairs
-    // were tuned so)
-    let exact = !cx.lenient || cx.crossings.is_empty();
-    if exact && (conflict || any_doubled(cx, i, j)) {
-        // Edges of one direction need ordering: the rule above sends an edge straight
-        // back first, which closes a wall, but a crack into the region is walked along.
-        if !relink_bundles(cx, i, j) {
-            return;
+}
+
+/// Fills `cx.touch_leaving` with the edges leaving the position `o` of `cx.shared[i..j]`,
+/// counter-clockwise from the +x direction, those of one direction in the order of their
+/// nodes in `cx.shared`, and `cx.touch_far` with their far ends by position. False when
+/// an edge there has no length (its far end at `o`: no direction to sort by).
+fn sort_ends(cx: &mut Context, i: usize, j: usize) -> bool {
+    let o = cx.pool.p(cx.shared[i]);
+    let (pool, rings, shared) = (&cx.pool, &cx.rings, &cx.shared);
+    let (leaving, far) = (&mut cx.touch_leaving, &mut cx.touch_far);
+    leaving.clear();
+    far.clear();
+    for (place, &m) in shared[i..j].iter().enumerate() {
+        let node = pool.get(m);
+        if node.removed || !rings[node.ring as usize].alive {
+            continue;
         }
-    } else if conflict {
-        return;
+        let (q, back) = (pool.next(m), pool.p(pool.prev(m)));
+        if pool.p(q) == o || back == o {
+            return false;
+        }
+        leaving.push((pool.p(q), place as u32, q));
+        far.push(pool.p(q));
     }
-    for k in 0..cx.relink.len() {
-        let (n, target) = cx.relink[k];
-        cx.pool.get_mut(n).next = target;
-        cx.pool.get_mut(target).prev = n;
-        cx.pool.touch(n);
+    leaving.sort_unstable_by(|a, b| cmp_around(o, a.0, b.0).then(a.1.cmp(&b.1)));
+    far.sort_unstable_by(|&a, &b| cmp_xy(a, b));
+    true
+}
+
+/// The face-walk rule at the position of `cx.shared[i..j]` from the edges sorted by
+/// [`sort_ends`]: each arriving edge continues along the leaving edge of greatest angle
+/// not past its own way back (the first one clockwise from it, the way back itself
+/// first), or else along the one of greatest angle; of several leaving in one direction,
+/// the first in `cx.shared`, as [`relink_by_pairs`] picks. O(k log k) for k nodes there.
+/// Returns whether an edge arrives from where another one leaves to (see [`any_doubled`]).
+fn relink_sorted(cx: &mut Context, i: usize, j: usize) -> bool {
+    let o = cx.pool.p(cx.shared[i]);
+    let (leaving, far) = (&cx.touch_leaving, &cx.touch_far);
+    let mut doubled = false;
+    for &n in &cx.shared[i..j] {
+        if !live(cx, n) {
+            continue;
+        }
+        let back = cx.pool.p(cx.pool.prev(n));
+        let Some(&last) = leaving.last() else {
+            break;
+        };
+        // the directions up to the way back, then the last of them (wrapping round)
+        let up_to = leaving.partition_point(|e| cmp_around(o, e.0, back) != Ordering::Greater);
+        let group = if up_to == 0 { last } else { leaving[up_to - 1] };
+        let first = leaving.partition_point(|e| cmp_around(o, e.0, group.0) == Ordering::Less);
+        if let Some(&(_, _, target)) = leaving.get(first) {
+            cx.relink.push((n, target));
+        }
+        doubled |= far.binary_search_by(|&p| cmp_xy(p, back)).is_ok();
     }
+    doubled
 }
 
 /// The face-walk rule where edges at X share directions (segments walked several times,
@@ -501,4 +574,93 @@ fn retrace(cx: &mut Context) {
 fn turn(cx: &Context, n: NodeId) -> Orientation {
     let pool = &cx.pool;
     orient2d(pool.p(pool.prev(n)), pool.p(n), pool.p(pool.next(n)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::testing::random;
+
+    /// Petals round the origin, between directions picked from a small integer grid (so
+    /// that some edges leave the origin in one direction, with different lengths), dealt
+    /// out to a few rings, each passing the origin once per petal; every ring given either
+    /// way round.
+    fn petal_rings(next: &mut impl FnMut(u64) -> u64, repeat: bool) -> (Vec<[f64; 2]>, Vec<usize>) {
+        let origin = Point::new(0.0, 0.0);
+        let mut directions: Vec<Point> = (0..9 + next(40))
+            .map(|_| Point::new(next(13) as f64 - 6.0, next(13) as f64 - 6.0))
+            .filter(|&d| d != origin)
+            .collect();
+        directions.sort_by(|&a, &b| cmp_around(origin, a, b).then(cmp_xy(a, b)));
+        directions.dedup();
+        let rings = 1 + next(4) as usize;
+        let mut petals: Vec<Vec<[f64; 2]>> = vec![Vec::new(); rings];
+        // petals from each direction to the next, some sharing a direction with the one
+        // before (their edges along it lie on one another)
+        let mut t = 0;
+        while t + 1 < directions.len() {
+            let (a, b) = (directions[t], directions[t + 1]);
+            t += 1 + next(2) as usize;
+            // a proper left turn from a to b, so that petals do not overlap
+            if orient2d(origin, a, b) != Orientation::CounterClockwise {
+                continue;
+            }
+            let (ra, rb) = (1 + next(3), 1 + next(3));
+            // with `repeat`, some petals twice, in two rings (lenient input)
+            for _ in 0..1 + usize::from(repeat && next(3) == 0) {
+                let ring = &mut petals[next(rings as u64) as usize];
+                ring.push([0.0, 0.0]);
+                ring.push([a.x * ra as f64, a.y * ra as f64]);
+                ring.push([b.x * rb as f64, b.y * rb as f64]);
+            }
+        }
+        let (mut vertices, mut starts) = (Vec::new(), Vec::new());
+        for mut ring in petals.into_iter().filter(|r| r.len() >= 3) {
+            if next(2) == 0 {
+                ring.reverse();
+            }
+            starts.push(vertices.len());
+            vertices.extend(ring);
+        }
+        (vertices, starts)
+    }
+
+    #[test]
+    fn sorted_relink_pairs_edges_as_the_pairwise_rule_does() {
+        let mut next = random(0x5eed_2024);
+        let mut compared = 0;
+        for case in 0..800 {
+            let lenient = case % 2 == 1;
+            let (vertices, starts) = petal_rings(&mut next, lenient);
+            let mut cx = Context {
+                lenient,
+                ..Context::default()
+            };
+            crate::load::load(&mut cx, &vertices, &starts).unwrap();
+            if !matches!(crate::clean::clean(&mut cx, false), Ok(true))
+                || crate::nest::nest(&mut cx, crate::Nesting::Auto).is_err()
+            {
+                continue;
+            }
+            let mut i = 0;
+            while i < cx.shared.len() {
+                let j = same_position_end(&cx, i);
+                let o = cx.pool.p(cx.shared[i]);
+                cx.relink.clear();
+                relink_by_pairs(&mut cx, i, j, o);
+                let mut by_pairs = cx.relink.clone();
+                let doubled = any_doubled(&cx, i, j);
+                cx.relink.clear();
+                assert!(sort_ends(&mut cx, i, j));
+                assert_eq!(relink_sorted(&mut cx, i, j), doubled, "doubled at {o:?}");
+                let mut sorted = cx.relink.clone();
+                by_pairs.sort_unstable();
+                sorted.sort_unstable();
+                assert_eq!(sorted, by_pairs, "at {o:?} in {vertices:?} {starts:?}");
+                compared += usize::from(j - i > FEW_AT_ONE_POSITION);
+                i = j;
+            }
+        }
+        assert!(compared > 100, "only {compared} positions with many nodes");
+    }
 }

@@ -83,6 +83,10 @@ pub(crate) struct Context {
     pub touch_winding: Vec<i64>,
     /// Scratch of `nest`: the rings passing through a position.
     pub probe_rings: Vec<u32>,
+    /// Scratch of `nest`: per ring, its place among the rings through the position being
+    /// decided, or `u32::MAX`; and those rings' edges through it (place, turned ends).
+    pub ring_slot: Vec<u32>,
+    pub hub_edges: Vec<(u32, crate::predicates::Point, crate::predicates::Point)>,
     /// Scratch of `nest`: (b, q) where ring b lies on ring q's boundary, inside it.
     pub overlaps: Vec<(u32, u32)>,
     /// Per ring as loaded: its first node and node count (its nodes lie together, in
@@ -101,6 +105,10 @@ pub(crate) struct Context {
     /// Scratch of `touch`: the new successor of each node of one shared position.
     pub relink: Vec<(NodeId, NodeId)>,
     pub touch_ends: Vec<(crate::predicates::Point, NodeId, bool)>,
+    /// Scratch of `touch` at a position many nodes share: the edges leaving it (far end,
+    /// place among the nodes there, far node) by direction, and their far ends by position.
+    pub touch_leaving: Vec<(crate::predicates::Point, u32, NodeId)>,
+    pub touch_far: Vec<crate::predicates::Point>,
     /// Scratch: one ring's edges with the segments walked both ways cancelled (see
     /// `clean::net_boundary_counter_clockwise`).
     pub net_edges: Vec<(crate::predicates::Point, crate::predicates::Point, i64)>,

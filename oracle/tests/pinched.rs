@@ -15,28 +15,11 @@
 
 mod common;
 
-use common::run;
+use common::{run, shuffled, Rng};
 use polytri::Strategy;
 use polytri_oracle::{check_with, generate, CheckOptions, Family, Input, Nesting, Params};
 
 type Ring = Vec<[f64; 2]>;
-
-/// splitmix64: a small seeded generator for the test's choices.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-
-    fn below(&mut self, n: usize) -> usize {
-        (self.next() % n.max(1) as u64) as usize
-    }
-}
 
 /// Twice the signed area (the coordinates are on a grid: exact enough for a sign).
 fn area2(ring: &Ring) -> f64 {
@@ -119,27 +102,7 @@ fn pinched(rings: &[Ring], rng: &mut Rng, splices: usize, cancel: bool) -> (Vec<
         }
         made += 1;
     }
-    for ring in &mut rings {
-        let k = rng.below(ring.len());
-        ring.rotate_left(k);
-    }
-    if rng.below(2) == 1 {
-        for ring in &mut rings {
-            ring.reverse();
-        }
-    }
-    // a quarter turn or more (exact): which vertex is rightmost-lowest changes
-    let quarter = rng.below(4);
-    for p in rings.iter_mut().flatten() {
-        let [x, y] = *p;
-        *p = match quarter {
-            0 => [x, y],
-            1 => [-y, x],
-            2 => [-x, -y],
-            _ => [y, -x],
-        };
-    }
-    (rings, made)
+    (shuffled(rings, rng), made)
 }
 
 /// What [`splice_cases`] saw.

@@ -352,7 +352,7 @@ fn depth_by_dropped(cx: &mut Context, b: usize) -> u32 {
 /// of the ring where at most this many lie, and decides there.
 const FEW_AT_A_HUB: usize = 8;
 
-/// How many vertices of the ring [`depth_of`] looks at for one no other node shares.
+/// How many vertices of the ring [`depth_of`] looks at for one where few nodes lie.
 const HUB_DETOUR: usize = 16;
 
 /// How many nodes lie at position `p`, when several do (`cx.shared` lists those, sorted
@@ -764,10 +764,10 @@ fn crossing(a: Point, b: Point, v: Point) -> i64 {
 }
 
 /// Whether ring `b` lies inside ring `r`, which passes through the position of b's node
-/// `v` along the edges `r_edges` (their ends turned by `ray`; `decide_at` gathers them
-/// for every ring there at once), judged by the winding number of `r` next to v, where it is exact however often `r`
-/// passes through v (a ring touching itself there has several corners at v, none of which
-/// alone tells):
+/// `v` along the edges `r_edges` (their ends turned by `ray`; `decide_at` gathers them for
+/// every ring there at once), judged by the winding number of `r` next to v, where it is
+/// exact however often `r` passes through v (a ring touching itself there has several
+/// corners at v, none of which alone tells):
 ///
 /// - on one of b's edges at v that does not run along `r` (a point of b's boundary off r,
 ///   as the oracle probes it);

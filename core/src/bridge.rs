@@ -298,9 +298,10 @@ fn find_bridge(cx: &Context, m: NodeId) -> Option<NodeId> {
 /// from the polygon's interior.
 ///
 /// The ray walks the grid row of M column by column (the long edges and those listed for
-/// the whole row first). Every edge not seen yet lies wholly in later columns, so once the
-/// best hit's edge ends within the columns walked, no later edge can be hit nearer
-/// (columns are monotone in x), and the walk stops.
+/// the whole row first). Every edge not seen yet lies wholly in later columns (or meets
+/// the row's band only there, for one listed along its segment), so once the best hit's
+/// edge ends within the columns walked, no later edge can be hit nearer (columns are
+/// monotone in x), and the walk stops.
 fn nearest_hit(cx: &Context, pm: Point) -> Option<(NodeId, NodeId)> {
     let grid = &cx.edge_grid;
     let mut best = None;
@@ -309,7 +310,8 @@ fn nearest_hit(cx: &Context, pm: Point) -> Option<(NodeId, NodeId)> {
         consider_hit(cx, pm, a, &mut best);
     }
     for column in grid.column(pm.x)..grid.columns() {
-        for a in grid.cell(row, column).chain(grid.column_list(column)) {
+        let listed = grid.cell(row, column).chain(grid.column_list(column));
+        for a in listed.chain(grid.along(row, column)) {
             consider_hit(cx, pm, a, &mut best);
         }
         if let Some((a, b)) = best {

@@ -25,6 +25,13 @@ const MAX_THIN: usize = 4;
 /// than placing them in cells.
 const ONE_CELL: usize = 32;
 
+/// Entries per edge (and a constant) that [`EdgeGrid`] may spend on edges long both ways,
+/// listed in the cells their segments pass (see [`EdgeGrid::insert`]); past it they go to
+/// the `long` list, which every query reads. As many as [`MAX_CELLS`]: memory stays linear
+/// in the edges.
+const ALONG_PER_EDGE: usize = 32;
+const ALONG_MIN: usize = 1024;
+
 /// `v` truncated to a row or column index, clamped to `0..=last` (NaN gives 0). Through
 /// `i64`, whose saturating conversion takes fewer instructions than `usize`'s.
 #[inline]
@@ -38,12 +45,14 @@ const END: u32 = u32::MAX;
 /// The edge grid (see the module docs).
 ///
 /// The edge starting at node `n` (`n → next(n)`) is listed in every cell its bounding box
-/// touches, or for a long edge in the lists of the rows or the columns it spans, or in the
-/// `long` list (see [`MAX_THIN`]). Entries may go stale when the pool is relinked: users
-/// re-read the current edge `n → next(n)` and check it against the query, and register
-/// changed edges again with [`EdgeGrid::insert`]. Rows and columns are monotone functions
-/// of y and x, so an edge is always found in the cell, row list or column list of any
-/// point of its bounding box, or in `long`.
+/// touches, or for a long edge in the lists of the rows or the columns it spans, or, for an
+/// edge long both ways, in the *along* lists of the cells its segment passes (see
+/// [`EdgeGrid::insert`]), or in the `long` list (see [`MAX_THIN`], [`ALONG_PER_EDGE`]).
+/// Entries may go stale when the pool is relinked: users re-read the current edge
+/// `n → next(n)` and check it against the query, and register changed edges again with
+/// [`EdgeGrid::insert`]. Rows and columns are monotone functions of y and x, so an edge is
+/// always found in the cell, row list or column list of any point of its bounding box, in
+/// the along list of the cell of any point of its segment, or in `long`.
 #[derive(Debug, Default)]
 pub(crate) struct EdgeGrid {
     x0: f64,
@@ -53,11 +62,13 @@ pub(crate) struct EdgeGrid {
     nx: usize,
     ny: usize,
     /// First entry of each list, or `END`: the cells row by row, then the rows' lists, then
-    /// the columns' lists.
+    /// the columns' lists, then the cells' along lists row by row.
     head: Vec<u32>,
     /// Listed edge and the next entry of the same list.
     entries: Vec<(NodeId, u32)>,
     long: Vec<NodeId>,
+    /// Entries the along lists may still take.
+    along_budget: usize,
 }
 
 impl EdgeGrid {
@@ -74,10 +85,12 @@ impl EdgeGrid {
         let (nx, ny) = shape(cells, w, h);
         (self.x0, self.y0, self.nx, self.ny) = (lo.x, lo.y, nx, ny);
         (self.sx, self.sy) = (scale(nx, w), scale(ny, h));
+        // (the along lists' heads come with the first edge listed there)
         self.head.clear();
         self.head.resize(nx * ny + ny + nx, END);
         self.entries.clear();
         self.long.clear();
+        self.along_budget = ALONG_PER_EDGE * edges + ALONG_MIN;
     }
 
     /// Column of x (monotone, clamped to the grid).
@@ -151,9 +164,62 @@ impl EdgeGrid {
             for c in c0..=c1 {
                 self.push(cells + self.ny + c, n);
             }
-        } else {
+        } else if !self.insert_along(n, a, b, (r0, r1), (c0, c1)) {
             self.long.push(n);
         }
+    }
+
+    /// Lists the edge `n` from `a` to `b`, spanning rows `r0..=r1` and columns `c0..=c1`,
+    /// in the along lists of the cells its segment passes: in each row, the columns of
+    /// the segment's part within the row's band, both widened by far more than rounding
+    /// can move them, so that the cell of every point of the segment lists it. False,
+    /// listing nothing, when that would exceed the budget.
+    fn insert_along(
+        &mut self,
+        n: NodeId,
+        a: Point,
+        b: Point,
+        (r0, r1): (usize, usize),
+        (c0, c1): (usize, usize),
+    ) -> bool {
+        // at most a row's share of the columns, plus one, per row
+        let most = 2 * (r1 - r0 + 1) + (c1 - c0 + 1);
+        if most > self.along_budget || self.sx <= 0.0 || self.sy <= 0.0 {
+            return false;
+        }
+        let (height, width) = (1.0 / self.sy, 1.0 / self.sx);
+        let magnitude = [a.x, a.y, b.x, b.y, self.x0, self.y0]
+            .iter()
+            .fold(0.0f64, |m, v| m.max(v.abs()));
+        let pad_y = 1e-9 * height + 1e-13 * magnitude;
+        let pad_x = 1e-9 * width + 1e-13 * magnitude;
+        let (lo, hi) = if a.y <= b.y { (a, b) } else { (b, a) };
+        // x on the segment at height y, clamped to its ends
+        let x_at = |y: f64| {
+            let t = if hi.y > lo.y {
+                ((y - lo.y) / (hi.y - lo.y)).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            lo.x + t * (hi.x - lo.x)
+        };
+        let base = self.nx * self.ny + self.ny + self.nx;
+        self.head.resize(base + self.nx * self.ny, END);
+        let mut listed = 0;
+        for r in r0..=r1 {
+            let bottom = self.y0 + r as f64 * height - pad_y;
+            let top = self.y0 + (r + 1) as f64 * height + pad_y;
+            let (xa, xb) = (x_at(bottom), x_at(top));
+            let (left, right) = if xa <= xb { (xa, xb) } else { (xb, xa) };
+            let ca = self.column(left - pad_x).max(c0);
+            let cb = self.column(right + pad_x).min(c1);
+            for c in ca..=cb {
+                self.push(base + r * self.nx + c, n);
+                listed += 1;
+            }
+        }
+        self.along_budget = self.along_budget.saturating_sub(listed);
+        true
     }
 
     /// Puts `n` at the front of list `list`.
@@ -184,6 +250,11 @@ impl EdgeGrid {
         self.list(self.nx * self.ny + self.ny + column)
     }
 
+    /// The edges long both ways whose segments pass the cell at `row`, `column`.
+    pub fn along(&self, row: usize, column: usize) -> CellIter<'_> {
+        self.list(self.nx * self.ny + self.ny + self.nx + row * self.nx + column)
+    }
+
     /// The edges long both ways; every query must look at them too.
     pub fn long(&self) -> &[NodeId] {
         &self.long
@@ -191,7 +262,8 @@ impl EdgeGrid {
 
     /// Every listed edge whose bounding box may meet the box `lo..=hi` (and possibly
     /// others, and possibly some twice): those of the cells row by row, of the rows' lists,
-    /// of the columns' lists, then the long ones.
+    /// of the columns' lists, of the cells' along lists, then the long ones. (An edge long
+    /// both ways comes only where its segment may meet the box.)
     pub fn query(&self, lo: Point, hi: Point) -> Query<'_> {
         let (c0, c1) = (self.column(lo.x), self.column(hi.x));
         let (r0, r1) = (self.row(lo.y), self.row(hi.y));
@@ -217,6 +289,7 @@ enum Stage {
     Cells,
     Rows,
     Columns,
+    Along,
     Long,
 }
 
@@ -276,6 +349,20 @@ impl Iterator for Query<'_> {
                     let list = cells + grid.ny + self.c;
                     if self.c < self.c1 {
                         self.c += 1;
+                    } else if grid.head.len() > cells + grid.ny + grid.nx {
+                        (self.stage, self.r, self.c) = (Stage::Along, self.r0, self.c0);
+                    } else {
+                        // no edge is listed along its segment
+                        self.stage = Stage::Long;
+                    }
+                    list
+                }
+                Stage::Along => {
+                    let list = cells + grid.ny + grid.nx + self.r * grid.nx + self.c;
+                    if self.c < self.c1 {
+                        self.c += 1;
+                    } else if self.r < self.r1 {
+                        (self.r, self.c) = (self.r + 1, self.c0);
                     } else {
                         self.stage = Stage::Long;
                     }
@@ -640,16 +727,63 @@ mod tests {
         edges.reset(p(0., 0.), p(100., 100.), 400);
         edges.insert(NodeId(1), p(0., 10.), p(5., 12.));
         edges.insert(NodeId(2), p(0., 50.), p(5., 40.));
-        edges.insert(NodeId(3), p(0., 0.), p(100., 100.)); // long
+        edges.insert(NodeId(3), p(0., 0.), p(100., 100.)); // long both ways: along
         let at = |x: f64, y: f64| edges.query(p(x, y), p(x, y)).collect::<Vec<_>>();
         assert!(at(1.0, 11.0).contains(&NodeId(1)));
         assert!(!at(1.0, 11.0).contains(&NodeId(2)));
         assert!(at(4.0, 45.0).contains(&NodeId(2)));
         assert!(!at(90.0, 45.0).contains(&NodeId(2)));
-        assert!(at(99.0, 1.0).contains(&NodeId(3)));
+        assert!(at(50.0, 50.0).contains(&NodeId(3)));
+        assert!(!at(99.0, 1.0).contains(&NodeId(3)), "far from its segment");
         assert!(edges
             .query(p(0., 0.), p(100., 100.))
             .any(|n| n == NodeId(2)));
+    }
+
+    #[test]
+    fn edges_long_both_ways_are_listed_in_the_cells_their_segments_pass() {
+        let mut next = crate::testing::random(0xa106);
+        for round in 0..200 {
+            let mut edges = EdgeGrid::default();
+            // boxes far from the origin too, where rounding is coarse
+            let offset = [0.0, 1e6, -3e9][round % 3];
+            let size = [1.0, 100.0, 1e-3][round % 3 / 2 + round % 2];
+            let lo = p(offset, offset * 0.5);
+            let hi = p(offset + size, offset * 0.5 + size * 0.7);
+            edges.reset(lo, hi, 2_000);
+            let coord = |next: &mut dyn FnMut(u64) -> u64| {
+                let (fx, fy) = (next(1 << 20) as f64, next(1 << 20) as f64);
+                let scale = 1.0 / f64::from(1u32 << 20);
+                p(
+                    lo.x + fx * scale * (hi.x - lo.x),
+                    lo.y + fy * scale * (hi.y - lo.y),
+                )
+            };
+            let mut segments = Vec::new();
+            for k in 0..60 {
+                let (a, b) = (coord(&mut next), coord(&mut next));
+                edges.insert(NodeId(k), a, b);
+                segments.push((a, b));
+            }
+            for (k, &(a, b)) in segments.iter().enumerate() {
+                let n = NodeId(k as u32);
+                if edges.long().contains(&n) {
+                    continue;
+                }
+                // the ends exactly, and points along the segment (rounded: within a few
+                // ulps of it, far inside the lists' margins)
+                let along = (0..=64).map(|i| {
+                    let t = f64::from(i) / 64.0;
+                    p(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y))
+                });
+                for q in [a, b].into_iter().chain(along) {
+                    assert!(
+                        edges.query(q, q).any(|m| m == n),
+                        "edge {k} {a:?}–{b:?} not found at {q:?}"
+                    );
+                }
+            }
+        }
     }
 
     #[test]

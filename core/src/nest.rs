@@ -316,7 +316,9 @@ fn depth_by_dropped(cx: &mut Context, b: usize) -> u32 {
         counts.clear();
         counts.resize(cx.order.len(), 0);
         set_slots(&cx.order, &mut slot);
-        winding_number(cx, b, p, &mut counts, &slot);
+        let mut along = core::mem::take(&mut cx.along_seen);
+        winding_number(cx, b, p, &mut counts, &slot, &mut along);
+        cx.along_seen = along;
         clear_slots(&cx.order, &mut slot);
         cx.ring_slot = slot;
         let mut k = 0;
@@ -439,7 +441,9 @@ fn decide_at(cx: &mut Context, b: usize, v: NodeId) -> u32 {
     let mut beyond = core::mem::take(&mut cx.touch_winding);
     beyond.clear();
     beyond.resize(cx.order.len(), 0);
-    let (winding, ray) = winding_number(cx, b, pv, &mut beyond, &slot);
+    let mut along = core::mem::take(&mut cx.along_seen);
+    let (winding, ray) = winding_number(cx, b, pv, &mut beyond, &slot, &mut along);
+    cx.along_seen = along;
     // the touching rings' edges through V, turned, grouped by ring
     let mut edges = core::mem::take(&mut cx.hub_edges);
     edges.clear();
@@ -491,7 +495,8 @@ fn depth_from_nearest(cx: &Context, b: usize, pv: Point) -> Option<u32> {
         near.visit(cx, b, pv, n);
     }
     for column in grid.column(pv.x)..grid.columns() {
-        for n in grid.cell(row, column).chain(grid.column_list(column)) {
+        let listed = grid.cell(row, column).chain(grid.column_list(column));
+        for n in listed.chain(grid.along(row, column)) {
             near.visit(cx, b, pv, n);
         }
         let hit_done = near
@@ -648,13 +653,15 @@ impl Nearest {
 /// The winding number of the rings other than `b` and those in `cx.order` (touching V)
 /// around `pv`, by a ray along the grid row or column with the fewest cells to the edge,
 /// and that ray. The crossings with the edges of `cx.order[k]` go to `touching[k]`
-/// instead (edges through `pv` cross nothing).
+/// instead (edges through `pv` cross nothing). `along` is scratch: the edges listed along
+/// their segments in the walk's cells, each counted once.
 fn winding_number(
     cx: &Context,
     b: usize,
     pv: Point,
     touching: &mut [i64],
     slot: &[u32],
+    along: &mut Vec<NodeId>,
 ) -> (i64, Ray) {
     let grid = &cx.edge_grid;
     let (row, column) = (grid.row(pv.y), grid.column(pv.x));
@@ -699,7 +706,9 @@ fn winding_number(
         count(n, None);
     }
     // the lists along the walk's own row (column) hold an edge once; cells and the lists
-    // across it hold an edge in every column (row) it spans
+    // across it hold an edge in every column (row) it spans; the along lists, in the
+    // cells its segment passes, which the walk gathers first
+    along.clear();
     match ray {
         Ray::East | Ray::West => {
             grid.row_list(row).for_each(|n| count(n, None));
@@ -711,6 +720,7 @@ fn winding_number(
             for c in columns {
                 let listed = grid.cell(row, c).chain(grid.column_list(c));
                 listed.for_each(|n| count(n, Some(c)));
+                along.extend(grid.along(row, c));
             }
         }
         Ray::North | Ray::South => {
@@ -723,9 +733,13 @@ fn winding_number(
             for r in rows {
                 let listed = grid.cell(r, column).chain(grid.row_list(r));
                 listed.for_each(|n| count(n, Some(r)));
+                along.extend(grid.along(r, column));
             }
         }
     }
+    along.sort_unstable();
+    along.dedup();
+    along.iter().for_each(|&n| count(n, None));
     (winding, ray)
 }
 

@@ -87,6 +87,8 @@ pub(crate) struct Context {
     /// decided, or `u32::MAX`; and those rings' edges through it (place, turned ends).
     pub ring_slot: Vec<u32>,
     pub hub_edges: Vec<(u32, crate::predicates::Point, crate::predicates::Point)>,
+    /// Scratch of `nest`'s winding numbers: edges met along the ray in along lists.
+    pub along_seen: Vec<NodeId>,
     /// Scratch of `nest`: (b, q) where ring b lies on ring q's boundary, inside it.
     pub overlaps: Vec<(u32, u32)>,
     /// Per ring as loaded: its first node and node count (its nodes lie together, in

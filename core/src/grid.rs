@@ -25,12 +25,13 @@ const MAX_THIN: usize = 4;
 /// than placing them in cells.
 const ONE_CELL: usize = 32;
 
-/// Entries per edge (and a constant) that [`EdgeGrid`] may spend on edges long both ways,
-/// listed in the cells their segments pass (see [`EdgeGrid::insert`]); past it they go to
-/// the `long` list, which every query reads. As many as [`MAX_CELLS`]: memory stays linear
-/// in the edges.
+/// Entries per edge that [`EdgeGrid`] may spend on edges long both ways, listed in the
+/// cells their segments pass (see [`EdgeGrid::insert`]); past it they go to the `long`
+/// list, which every query reads. As many as [`MAX_CELLS`], so that memory stays linear in
+/// the edges, but at least [`ALONG_MIN`] in all (8 MB): a fan of 3,000 long wedges needs
+/// about 40 per edge.
 const ALONG_PER_EDGE: usize = 32;
-const ALONG_MIN: usize = 1024;
+const ALONG_MIN: usize = 1 << 20;
 
 /// `v` truncated to a row or column index, clamped to `0..=last` (NaN gives 0). Through
 /// `i64`, whose saturating conversion takes fewer instructions than `usize`'s.

@@ -9,10 +9,15 @@
 //! - a flower: one ring through the centre once per petal, or the petals dealt out to a
 //!   few rings that touch there;
 //! - a wheel: a disk with every other slice a hole, the holes touching at the centre and
-//!   lying along the rim.
+//!   lying along the rim;
+//! - a corner fan: thin wedge holes fanning out from a corner of a square, touching it
+//!   there;
+//! - slits: thin parallelograms across a square, along its diagonal.
 //!
-//! Each is given with random ring starts, either winding, in a random quarter turn; both
-//! strategies, strict and lenient, must return a triangulation the oracle accepts.
+//! The last two, and all of them with 150 to 600 spokes, have many edges long both ways,
+//! which the edge grid lists in the cells their segments pass. Each input is given with
+//! random ring starts, either winding, in a random quarter turn; both strategies, strict
+//! and lenient, must return a triangulation the oracle accepts.
 
 mod common;
 
@@ -54,8 +59,8 @@ fn petal(rim: &Ring, i: usize) -> Ring {
     vec![CENTRE, at(1.0 / 3.0), at(2.0 / 3.0)]
 }
 
-/// The input of kind `kind` (0 pie, 1 pinwheel, 2 flower, 3 wheel) with `k` spokes, and
-/// its nesting convention.
+/// The input of kind `kind` (0 pie, 1 pinwheel, 2 flower, 3 wheel, 4 corner fan, 5 slits)
+/// with `k` spokes, and its nesting convention.
 fn hub(kind: usize, k: usize, rng: &mut Rng) -> (Vec<Ring>, Nesting) {
     let rim = rim(k, rng);
     match kind {
@@ -89,6 +94,38 @@ fn hub(kind: usize, k: usize, rng: &mut Rng) -> (Vec<Ring>, Nesting) {
             out.retain(|r| !r.is_empty());
             (out, Nesting::Auto)
         }
+        4 => {
+            let square = vec![[0.0, 0.0], [100.0, 0.0], [100.0, 100.0], [0.0, 100.0]];
+            let at = |t: f64| {
+                let angle = std::f64::consts::FRAC_PI_2 * t / k as f64;
+                [90.0 * angle.cos(), 90.0 * angle.sin()]
+            };
+            // clockwise wedges, each within its own share of the right angle
+            let holes = (0..k).map(|i| vec![[0.0, 0.0], at(i as f64 + 0.85), at(i as f64 + 0.15)]);
+            (
+                std::iter::once(square).chain(holes).collect(),
+                Nesting::FirstIsOuter,
+            )
+        }
+        5 => {
+            let square = vec![[0.0, 0.0], [1000.0, 0.0], [1000.0, 1000.0], [0.0, 1000.0]];
+            // along the lines x − y = offset, 10 from the square's sides, clockwise
+            let gap = 1400.0 / (k + 1) as f64;
+            let holes = (0..k).filter_map(|i| {
+                let offset = -700.0 + gap * (i + 1) as f64;
+                let (x0, x1) = ((10.0 + offset).max(10.0), (990.0 + offset).min(990.0));
+                // narrower than the gap, and short of the square's side
+                let width = (0.2 * gap).min(5.0);
+                (x1 - x0 >= 20.0).then(|| {
+                    let (a, b) = ([x0, x0 - offset], [x1, x1 - offset]);
+                    vec![a, [a[0] + width, a[1]], [b[0] + width, b[1]], b]
+                })
+            });
+            (
+                std::iter::once(square).chain(holes).collect(),
+                Nesting::FirstIsOuter,
+            )
+        }
         _ => {
             let holes = (0..k).step_by(2).map(|i| {
                 let mut s = slice(&rim, i);
@@ -103,14 +140,14 @@ fn hub(kind: usize, k: usize, rng: &mut Rng) -> (Vec<Ring>, Nesting) {
     }
 }
 
-#[test]
-fn many_rings_at_one_point_triangulate_validly() {
+/// Every seed's input, with spokes from `spokes`, through both strategies, strict and
+/// lenient, against the oracle; the failures.
+fn judge(seeds: std::ops::Range<u64>, spokes: std::ops::Range<usize>) -> Vec<String> {
     let mut failures = Vec::new();
-    let mut cases = 0;
-    for seed in 0..160u64 {
+    for seed in seeds {
         let mut rng = Rng(seed ^ 0x48_5542);
-        let kind = seed as usize % 4;
-        let k = 9 + rng.below(52);
+        let kind = seed as usize % 6;
+        let k = spokes.start + rng.below(spokes.len());
         let (rings, nesting) = hub(kind, k, &mut rng);
         let input = Input::from_rings(&shuffled(rings, &mut rng), nesting);
         let what = format!("seed {seed}, kind {kind}, {k} spokes");
@@ -119,7 +156,6 @@ fn many_rings_at_one_point_triangulate_validly() {
             failures.push(format!("{what}: input invalid: {:?}", judged.failures()));
             continue;
         }
-        cases += 1;
         for strategy in [Strategy::Fast, Strategy::Quality] {
             for lenient in [false, true] {
                 match run(&input, strategy, lenient) {
@@ -135,11 +171,24 @@ fn many_rings_at_one_point_triangulate_validly() {
             }
         }
     }
-    assert_eq!(cases, 160, "every input valid");
+    failures
+}
+
+fn assert_none(failures: &[String]) {
     assert!(
         failures.is_empty(),
         "{} failures:\n{}",
         failures.len(),
         failures.join("\n")
     );
+}
+
+#[test]
+fn many_rings_at_one_point_triangulate_validly() {
+    assert_none(&judge(0..180, 9..61));
+}
+
+#[test]
+fn many_long_edges_triangulate_validly() {
+    assert_none(&judge(1000..1024, 150..601));
 }

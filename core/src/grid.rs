@@ -208,8 +208,17 @@ impl EdgeGrid {
         self.head.resize(base + self.nx * self.ny, END);
         let mut listed = 0;
         for r in r0..=r1 {
-            let bottom = self.y0 + r as f64 * height - pad_y;
-            let top = self.y0 + (r + 1) as f64 * height + pad_y;
+            // rows clamp: the first and last take everything beyond the grid's box
+            let bottom = if r == 0 {
+                f64::NEG_INFINITY
+            } else {
+                self.y0 + r as f64 * height - pad_y
+            };
+            let top = if r + 1 == self.ny {
+                f64::INFINITY
+            } else {
+                self.y0 + (r + 1) as f64 * height + pad_y
+            };
             let (xa, xb) = (x_at(bottom), x_at(top));
             let (left, right) = if xa <= xb { (xa, xb) } else { (xb, xa) };
             let ca = self.column(left - pad_x).max(c0);
@@ -762,7 +771,14 @@ mod tests {
             };
             let mut segments = Vec::new();
             for k in 0..60 {
-                let (a, b) = (coord(&mut next), coord(&mut next));
+                let (mut a, mut b) = (coord(&mut next), coord(&mut next));
+                if k % 10 == 0 {
+                    // past the box (rows and columns clamp)
+                    (a, b) = (
+                        p(a.x, lo.y - 0.5 * (hi.y - lo.y)),
+                        p(b.x, hi.y + 0.5 * (hi.y - lo.y)),
+                    );
+                }
                 edges.insert(NodeId(k), a, b);
                 segments.push((a, b));
             }

@@ -277,14 +277,24 @@ fn depth_of(cx: &mut Context, b: usize) -> u32 {
 
 /// The depth of ring `b`, every corner of which lies on other rings with both its edges.
 /// At b's rightmost vertex every ring is decided but those (the open rings); each of them
-/// is decided at the first of b's input vertices off it, the ones cleaning dropped
+/// is decided at the first other vertex of b where it can be (a corner of b not along
+/// it), else at the first of b's input vertices off it, the ones cleaning dropped
 /// included (the tip of a zero-width spike, say, may leave a ring that b otherwise lies
 /// on). "Off" counts the edges cleaning dropped, as the oracle does. An open ring holding
 /// all of them has b's boundary on its own, with b's corners inside its corners: it
 /// contains b ([`compute_depths`] checks that their depths then differ by one, from
 /// `cx.overlaps`).
 fn depth_by_dropped(cx: &mut Context, b: usize) -> u32 {
-    let mut depth = decide_at(cx, b, cx.rings[b].rightmost);
+    let first = cx.rings[b].rightmost;
+    let mut depth = decide_at(cx, b, first);
+    // A ring left open at the rightmost vertex may decide at another vertex of b, even
+    // where some other ring stays open at every vertex (b a lobe lying on another ring,
+    // with a third ring through some of its vertices): keep each decision.
+    let mut v = cx.pool.next(first);
+    while v != first && !cx.order.is_empty() {
+        depth += decide_open_at(cx, b, v);
+        v = cx.pool.next(v);
+    }
     // the edges of the open rings that cleaning dropped: each has a dropped end
     let mut dropped = core::mem::take(&mut cx.dropped_edges);
     dropped.clear();
@@ -431,20 +441,37 @@ fn decide_at(cx: &mut Context, b: usize, v: NodeId) -> u32 {
     let mut slot = core::mem::take(&mut cx.ring_slot);
     rings_through(cx, b, pv, &mut touching, &mut slot);
     cx.order = touching;
+    cx.ring_slot = slot;
     if cx.order.is_empty() && v == cx.rings[b].rightmost && cx.crossings.is_empty() {
-        cx.ring_slot = slot;
         if let Some(depth) = depth_from_nearest(cx, b, pv) {
             return depth;
         }
-        slot = core::mem::take(&mut cx.ring_slot);
     }
+    let (winding, depth) = decide_listed(cx, b, v);
+    winding.max(0) as u32 + depth
+}
+
+/// How many of the rings still open (`cx.order`) contain ring `b`, decided at b's node `v`
+/// as [`decide_at`] decides them; those it cannot decide there stay in `cx.order`.
+fn decide_open_at(cx: &mut Context, b: usize, v: NodeId) -> u32 {
+    set_slots(&cx.order, &mut cx.ring_slot);
+    decide_listed(cx, b, v).1
+}
+
+/// Decides at b's node `v` which rings of `cx.order` (their places set in `cx.ring_slot`,
+/// cleared here) contain ring `b`: one off v's position by its winding number, one through
+/// it by its corner there ([`locally_inside`]); those undecided stay in `cx.order`.
+/// Returns the winding number of the other rings, and how many of `cx.order` contain b.
+fn decide_listed(cx: &mut Context, b: usize, v: NodeId) -> (i64, u32) {
+    let pv = cx.pool.p(v);
+    let slot = core::mem::take(&mut cx.ring_slot);
     let mut beyond = core::mem::take(&mut cx.touch_winding);
     beyond.clear();
     beyond.resize(cx.order.len(), 0);
     let mut along = core::mem::take(&mut cx.along_seen);
     let (winding, ray) = winding_number(cx, b, pv, &mut beyond, &slot, &mut along);
     cx.along_seen = along;
-    // the touching rings' edges through V, turned, grouped by ring
+    // the listed rings' edges through V, turned, grouped by ring
     let mut edges = core::mem::take(&mut cx.hub_edges);
     edges.clear();
     for n in cx.edge_grid.query(pv, pv) {
@@ -455,15 +482,21 @@ fn decide_at(cx: &mut Context, b: usize, v: NodeId) -> u32 {
         }
     }
     edges.sort_unstable_by_key(|e| e.0);
+    let mut slot = slot;
     clear_slots(&cx.order, &mut slot);
     cx.ring_slot = slot;
-    let mut depth = winding.max(0) as u32;
+    let mut depth = 0;
     let mut open = 0;
     let mut from = 0;
     for (k, &base) in beyond.iter().enumerate() {
         let r = cx.order[k];
         let to = from + edges[from..].partition_point(|e| e.0 == k as u32);
-        match locally_inside(cx, v, &edges[from..to], ray, base) {
+        let decided = if from == to {
+            Some(base > 0)
+        } else {
+            locally_inside(cx, v, &edges[from..to], ray, base)
+        };
+        match decided {
             Some(inside) => depth += u32::from(inside),
             None => {
                 cx.order[open] = r;
@@ -475,7 +508,7 @@ fn decide_at(cx: &mut Context, b: usize, v: NodeId) -> u32 {
     cx.order.truncate(open);
     cx.touch_winding = beyond;
     cx.hub_edges = edges;
-    depth
+    (winding, depth)
 }
 
 /// The depth of ring `b` read off the nearest edge e (of ring R) that the ray from `pv`,

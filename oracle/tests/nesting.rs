@@ -11,7 +11,9 @@
 //! is valid.
 //!
 //! Figure eights whose lobes turn opposite ways, one lobe cancelled by another ring, are
-//! valid too; there only lenient mode is held to a result (strict mode may refuse them).
+//! valid too, and so is a ring with a lobe inside its other lobe, sharing an edge, the
+//! outer lobe cancelled by another ring; there only lenient mode is held to a result
+//! (strict mode may refuse them).
 
 mod common;
 
@@ -473,6 +475,55 @@ fn lenient_mode_covers_figure_eights_whose_lobe_another_ring_cancels() {
         valid += check_variants(&name, &rings, false, &mut failures).0;
     }
     assert!(valid >= 32, "only {valid} valid variants");
+    assert!(
+        failures.is_empty(),
+        "{} failures:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
+}
+
+/// A ring P O T P L T whose lobe P O T lies inside its lobe P L T (O on L–T, the edge
+/// P–T walked twice), and a ring P L T lying on the outer lobe (raw_rings, seed 9595:
+/// lenient mode filled nothing). Both lobes turn the same way, so the ring winds twice
+/// round P O T; the other ring cancels one turn, and the region is P O T. As found, the
+/// ring also runs out along walls and back.
+fn lobe_in_lobe() -> Vec<(String, Vec<Ring>)> {
+    let (p, q, o, t, l, r) = (
+        [-1.0, -1.0],
+        [-13.0, -1.0],
+        [0.0, 0.0],
+        [10.0, 0.0],
+        [-12.0, 0.0],
+        [0.0, -1.0],
+    );
+    let cancelling = vec![p, l, t];
+    let plain = vec![p, o, t, p, l, t];
+    let walled = vec![p, q, p, o, t, p, p, l, t, p, q, p, r];
+    let mut out = Vec::new();
+    for (name, ring) in [("", plain), (", with walls", walled)] {
+        for k in 0..ring.len() {
+            out.push((
+                format!("a lobe in a lobe another ring cancels{name}, from {k}"),
+                vec![cancelling.clone(), from(&ring, k)],
+            ));
+        }
+        out.push((
+            format!("a lobe in a lobe another ring cancels{name}, that ring last"),
+            vec![ring, cancelling.clone()],
+        ));
+    }
+    out
+}
+
+#[test]
+fn lenient_mode_covers_a_lobe_in_a_lobe_another_ring_cancels() {
+    let mut failures = Vec::new();
+    let mut valid = 0;
+    for (name, rings) in lobe_in_lobe() {
+        valid += check_variants(&name, &rings, false, &mut failures).0;
+    }
+    assert!(valid >= 100, "only {valid} valid variants");
     assert!(
         failures.is_empty(),
         "{} failures:\n{}",

@@ -174,7 +174,10 @@ impl EdgeGrid {
     /// in the along lists of the cells its segment passes: in each row, the columns of
     /// the segment's part within the row's band, both widened by far more than rounding
     /// can move them, so that the cell of every point of the segment lists it. False,
-    /// listing nothing, when that would exceed the budget.
+    /// listing nothing, when that would exceed the budget. Out of line, as rare: `insert`
+    /// is hot.
+    #[cold]
+    #[inline(never)]
     fn insert_along(
         &mut self,
         n: NodeId,

@@ -213,3 +213,4 @@ series!(random = Series::Random; n_1e3 => 1_000, n_1e4 => 10_000, n_1e5 => 100_0
 series!(star = Series::Star; n_1e3 => 1_000, n_1e4 => 10_000, n_1e5 => 100_000, n_1e6 => 1_000_000);
 series!(circles = Series::Circles; n_1e3 => 1_000, n_1e4 => 10_000, n_1e5 => 100_000, n_1e6 => 1_000_000);
 series!(comb = Series::Comb; n_1e3 => 1_000, n_1e4 => 10_000, n_1e5 => 100_000, n_1e6 => 1_000_000);
+series!(pinwheel = Series::Pinwheel; n_1e3 => 1_000, n_1e4 => 10_000, n_1e5 => 100_000);

@@ -3,8 +3,8 @@
 //!
 //! Every [`Series`] makes an input of about `n` vertices for any `n` from a few dozen to
 //! 10⁶ and beyond, deterministically (seeded by `n`), valid by construction: simple rings,
-//! holes inside the outer ring and apart from each other, first ring outer
-//! ([`Nesting::FirstIsOuter`]).
+//! holes inside the outer ring and apart from each other (but for the pinwheel's, which
+//! touch at one point), first ring outer ([`Nesting::FirstIsOuter`]).
 //!
 //! ```
 //! use polytri_oracle::series::Series;
@@ -37,6 +37,10 @@ pub enum Series {
     Circles,
     /// A comb: thin teeth on a spine, every gap a pair of reflex vertices.
     Comb,
+    /// A square with about `n / 3` thin triangular holes meeting at its centre: every hole
+    /// touches every other at one point, and their sides are long edges running across
+    /// much of the input (the shape of a pie chart's slices, or a fan).
+    Pinwheel,
 }
 
 /// Sides of every hole of [`Series::Circles`].
@@ -44,7 +48,13 @@ const CIRCLE_SIDES: usize = 32;
 
 impl Series {
     /// Every series, in the order tables show them.
-    pub const ALL: [Series; 4] = [Series::Random, Series::Star, Series::Circles, Series::Comb];
+    pub const ALL: [Series; 5] = [
+        Series::Random,
+        Series::Star,
+        Series::Circles,
+        Series::Comb,
+        Series::Pinwheel,
+    ];
 
     /// The name, as [`Display`](fmt::Display) writes and [`FromStr`] reads it.
     pub const fn name(self) -> &'static str {
@@ -53,6 +63,7 @@ impl Series {
             Series::Star => "star",
             Series::Circles => "circles",
             Series::Comb => "comb",
+            Series::Pinwheel => "pinwheel",
         }
     }
 
@@ -63,6 +74,7 @@ impl Series {
             Series::Star => "a star-shaped polygon with random radii",
             Series::Circles => "a rectangle with n/32 holes, each a 32-gon",
             Series::Comb => "a comb with n/4 thin teeth",
+            Series::Pinwheel => "a square with n/3 thin triangular holes meeting at its centre",
         }
     }
 
@@ -73,6 +85,7 @@ impl Series {
             Series::Star => vec![star(n)],
             Series::Circles => circles(n),
             Series::Comb => vec![comb(n)],
+            Series::Pinwheel => pinwheel(n),
         };
         Input::from_rings(&rings, Nesting::FirstIsOuter)
     }
@@ -152,6 +165,19 @@ fn comb(n: usize) -> Vec<[f64; 2]> {
     ring
 }
 
+/// A square of side 4 round the origin, and about `n / 3` clockwise triangles from the
+/// origin out to radius 1, each over half of its share of the full turn (at least one).
+fn pinwheel(n: usize) -> Vec<Vec<[f64; 2]>> {
+    let holes = (n.saturating_sub(4) / 3).max(1);
+    let at = |turns: f64| {
+        let angle = std::f64::consts::TAU * turns / holes as f64;
+        [angle.cos(), angle.sin()]
+    };
+    let square = vec![[-2.0, -2.0], [2.0, -2.0], [2.0, 2.0], [-2.0, 2.0]];
+    let wedges = (0..holes).map(|i| vec![[0.0, 0.0], at(i as f64 + 0.5), at(i as f64)]);
+    std::iter::once(square).chain(wedges).collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -171,9 +197,11 @@ mod tests {
                 let input = series.input(n);
                 let got = input.vertices.len();
                 // space partitioning drops points that fall exactly on a splitting line;
-                // the smallest comb has 6 vertices, the smallest circles 36
+                // the smallest comb has 6 vertices, the smallest circles 36, the smallest
+                // pinwheel 7
                 assert!(got.abs_diff(n) <= n / 10 + 33, "{series} {n}: {got}");
-                gen::validate(&input, false)
+                // the pinwheel's holes touch at its centre, by design
+                gen::validate(&input, series == Series::Pinwheel)
                     .unwrap_or_else(|e| panic!("{series} at {n} invalid: {e}"));
             }
         }

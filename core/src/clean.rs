@@ -465,24 +465,26 @@ fn orient_ring(cx: &mut Context, r: usize) {
         }
     }
     cx.rings[r].rightmost = best;
-    // Visited once, the rightmost-lowest vertex is a strict turn (no repeats, no spikes,
-    // and a split node is never rightmost-lowest), and that turn gives the winding. A ring
-    // touching itself there may turn at a visit whose edges belong to different lobes;
-    // where every edge there is walked both ways, the ring's net boundary decides.
+    // Visited once, the rightmost-lowest vertex is usually a strict turn (no repeats, no
+    // spikes, and a split node is never rightmost-lowest), and that turn gives the
+    // winding. A ring touching itself there may turn at a visit whose edges belong to
+    // different lobes; where every edge there is walked both ways, the ring's net boundary
+    // decides. So it does at a wall's tip visited once, which a lobe cut from a ring may
+    // keep (the filter ran before the cut): its turn says nothing.
+    let pool = &cx.pool;
+    let turn = orient2d(
+        pool.p(pool.prev(best)),
+        pool.p(best),
+        pool.p(pool.next(best)),
+    );
     let counter_clockwise = if visits > 1 {
         outermost_edge_arrives(cx, best).or_else(|| net_boundary_counter_clockwise(cx, start))
+    } else if turn == Orientation::Collinear {
+        net_boundary_counter_clockwise(cx, start)
     } else {
         None
     };
-    let pool = &cx.pool;
-    let counter_clockwise = counter_clockwise.unwrap_or_else(|| {
-        let turn = orient2d(
-            pool.p(pool.prev(best)),
-            pool.p(best),
-            pool.p(pool.next(best)),
-        );
-        turn != Orientation::Clockwise
-    });
+    let counter_clockwise = counter_clockwise.unwrap_or(turn != Orientation::Clockwise);
     if !counter_clockwise {
         cx.pool.reverse(start);
     }

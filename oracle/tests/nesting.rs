@@ -297,6 +297,30 @@ fn configurations() -> Vec<(String, Vec<Ring>)> {
             ));
         }
     }
+    // One ring: a lower part A B C along y = 0 to D, up round an upper lobe D E F G H, back
+    // along y = 0 from H to O, and down round a notch O I J (raw_rings, seed 9696). The
+    // segment O–D is walked both ways. Lenient mode cut it into lobes, one of them with a
+    // wall J–D left on it whose tip was its rightmost vertex, read that tip's (straight)
+    // turn as counter-clockwise, and made the notch part of the region.
+    let ring = vec![
+        [2.0, -6.0],
+        [-6.0, -6.0],
+        [-6.0, 0.0],
+        [8.0, 0.0],
+        [10.0, 11.0],
+        [11.0, 11.0],
+        [11.0, 10.0],
+        [10.0, 0.0],
+        [0.0, 0.0],
+        [-1.0, -4.0],
+        [3.0, 0.0],
+    ];
+    for k in 0..ring.len() {
+        out.push((
+            format!("a lobe with a wall whose tip is rightmost, from {k}"),
+            vec![from(&ring, k)],
+        ));
+    }
     out
 }
 

@@ -17,7 +17,7 @@
 
 mod common;
 
-use common::run;
+use common::{assert_no_failures, run};
 use polytri::Strategy;
 use polytri_oracle::{check_with, CheckOptions, Input, Nesting};
 
@@ -421,12 +421,7 @@ fn strict_mode_accepts_exactly_what_the_oracle_calls_valid() {
         valid > 50 && invalid > 50,
         "{valid} valid, {invalid} invalid"
     );
-    assert!(
-        failures.is_empty(),
-        "{} failures:\n{}",
-        failures.len(),
-        failures.join("\n")
-    );
+    assert_no_failures(&failures);
 }
 
 /// Two figure eights sharing a counter-clockwise lobe B, with clockwise lobes A ⊃ A'
@@ -501,12 +496,7 @@ fn assert_lenient_covers(configurations: Vec<(String, Vec<Ring>)>, least_valid: 
         valid += check_variants(&name, &rings, false, &mut failures).0;
     }
     assert!(valid >= least_valid, "only {valid} valid variants");
-    assert!(
-        failures.is_empty(),
-        "{} failures:\n{}",
-        failures.len(),
-        failures.join("\n")
-    );
+    assert_no_failures(&failures);
 }
 
 #[test]

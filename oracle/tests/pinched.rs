@@ -15,7 +15,7 @@
 
 mod common;
 
-use common::{run, shuffled, Rng};
+use common::{assert_no_failures, run, shuffled, Rng};
 use polytri::Strategy;
 use polytri_oracle::{check_with, generate, CheckOptions, Family, Input, Nesting, Params};
 
@@ -123,12 +123,7 @@ impl Tally {
             cases >= 200 && most >= 3,
             "{cases} cases, {splices} splices, at most {most}"
         );
-        assert!(
-            self.failures.is_empty(),
-            "{} failures:\n{}",
-            self.failures.len(),
-            self.failures.join("\n")
-        );
+        assert_no_failures(&self.failures);
     }
 }
 

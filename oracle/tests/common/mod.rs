@@ -61,3 +61,13 @@ pub fn shuffled(mut rings: Vec<Vec<[f64; 2]>>, rng: &mut Rng) -> Vec<Vec<[f64; 2
     }
     rings
 }
+
+/// Fails, listing them, when there are failures.
+pub fn assert_no_failures(failures: &[String]) {
+    assert!(
+        failures.is_empty(),
+        "{} failures:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
+}

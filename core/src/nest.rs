@@ -239,9 +239,9 @@ pub(crate) fn index_all_edges(cx: &mut Context) {
     cx.grid_current = true;
 }
 
-/// The number of rings containing ring `b`, decided at its rightmost vertex — or, where
-/// another ring runs along both of b's edges there, at the next vertex that decides, or
-/// at one of b's input vertices that cleaning dropped.
+/// The number of rings containing ring `b`, decided at its rightmost vertex — or, for the
+/// rings along both of b's edges there, at the next vertex of b that decides them, or at
+/// one of b's input vertices that cleaning dropped.
 fn depth_of(cx: &mut Context, b: usize) -> u32 {
     let first = cx.rings[b].rightmost;
     if nodes_at(cx, cx.pool.p(first)) > FEW_AT_A_HUB {
@@ -262,39 +262,31 @@ fn depth_of(cx: &mut Context, b: usize) -> u32 {
             v = cx.pool.next(v);
         }
     }
-    let mut v = first;
-    loop {
-        if let Some(depth) = depth_at(cx, b, v) {
-            return depth;
-        }
-        v = cx.pool.next(v);
-        if v == first {
-            break;
-        }
-    }
-    depth_by_dropped(cx, b)
-}
-
-/// The depth of ring `b`, every corner of which lies on other rings with both its edges.
-/// At b's rightmost vertex every ring is decided but those (the open rings); each of them
-/// is decided at the first other vertex of b where it can be (a corner of b not along
-/// it), else at the first of b's input vertices off it, the ones cleaning dropped
-/// included (the tip of a zero-width spike, say, may leave a ring that b otherwise lies
-/// on). "Off" counts the edges cleaning dropped, as the oracle does. An open ring holding
-/// all of them has b's boundary on its own, with b's corners inside its corners: it
-/// contains b ([`compute_depths`] checks that their depths then differ by one, from
-/// `cx.overlaps`).
-fn depth_by_dropped(cx: &mut Context, b: usize) -> u32 {
-    let first = cx.rings[b].rightmost;
     let mut depth = decide_at(cx, b, first);
-    // A ring left open at the rightmost vertex may decide at another vertex of b, even
-    // where some other ring stays open at every vertex (b a lobe lying on another ring,
-    // with a third ring through some of its vertices): keep each decision.
+    // A ring left open at the rightmost vertex is decided at the next vertex of b that
+    // can, each decision kept (b a lobe lying on another ring, with a third ring through
+    // some of its vertices, decides the third ring elsewhere than the second).
     let mut v = cx.pool.next(first);
     while v != first && !cx.order.is_empty() {
         depth += decide_open_at(cx, b, v);
         v = cx.pool.next(v);
     }
+    if cx.order.is_empty() {
+        depth
+    } else {
+        depth + depth_by_dropped(cx, b)
+    }
+}
+
+/// How many of the rings still open (`cx.order`) contain ring `b`, every corner of which
+/// lies on them with both its edges: each is decided at the first of b's input vertices
+/// off it, the ones cleaning dropped included (the tip of a zero-width spike, say, may
+/// leave a ring that b otherwise lies on). "Off" counts the edges cleaning dropped, as the
+/// oracle does. An open ring holding all of them has b's boundary on its own, with b's
+/// corners inside its corners: it contains b ([`compute_depths`] checks that their depths
+/// then differ by one, from `cx.overlaps`).
+fn depth_by_dropped(cx: &mut Context, b: usize) -> u32 {
+    let mut depth = 0;
     // the edges of the open rings that cleaning dropped: each has a dropped end
     let mut dropped = core::mem::take(&mut cx.dropped_edges);
     dropped.clear();

@@ -456,7 +456,7 @@ fn decide_open_at(cx: &mut Context, b: usize, v: NodeId) -> u32 {
 /// Returns the winding number of the other rings, and how many of `cx.order` contain b.
 fn decide_listed(cx: &mut Context, b: usize, v: NodeId) -> (i64, u32) {
     let pv = cx.pool.p(v);
-    let slot = core::mem::take(&mut cx.ring_slot);
+    let mut slot = core::mem::take(&mut cx.ring_slot);
     let mut beyond = core::mem::take(&mut cx.touch_winding);
     beyond.clear();
     beyond.resize(cx.order.len(), 0);
@@ -474,7 +474,6 @@ fn decide_listed(cx: &mut Context, b: usize, v: NodeId) -> (i64, u32) {
         }
     }
     edges.sort_unstable_by_key(|e| e.0);
-    let mut slot = slot;
     clear_slots(&cx.order, &mut slot);
     cx.ring_slot = slot;
     let mut depth = 0;

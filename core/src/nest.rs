@@ -13,7 +13,9 @@
 //! Usually it costs less: rings go by descending rightmost x, and when the first edge the
 //! ray from B's rightmost vertex meets is unambiguous (met inside, alone, no ring through
 //! V, no crossings), B's depth is that edge's ring's depth, plus one if V lies on its inner
-//! side. The ray then stops at that edge, a cell or two away.
+//! side. The ray then stops at that edge, a cell or two away. And a few small rings that
+//! meet nowhere (a glyph) skip the grid: each one's depth is counted directly, from the
+//! others' winding numbers around one of its vertices.
 //!
 //! `Nesting::FirstIsOuter` (earcut's convention) takes ring 0 as the outer boundary and the
 //! rest as its holes; strict mode checks that this is true.
@@ -176,6 +178,9 @@ pub(crate) fn skip_ring(cx: &mut Context, r: usize) {
 /// Rings go by descending rightmost x: the ring whose depth [`depth_from_nearest`] builds
 /// on reaches further right than the ring asking, so it is done by then.
 fn compute_depths(cx: &mut Context) -> Result<(), Error> {
+    if direct_depths(cx) {
+        return Ok(());
+    }
     index_all_edges(cx);
     cx.ring_slot.clear();
     cx.ring_slot.resize(cx.rings.len(), NO_SLOT);
@@ -211,6 +216,48 @@ fn compute_depths(cx: &mut Context) -> Result<(), Error> {
         }
         _ => Ok(()),
     }
+}
+
+/// [`direct_depths`] decides rings that meet nowhere while their number times their edges
+/// is at most this: a walk over every edge per ring then costs less than listing the edges
+/// in the grid (a glyph: an outer ring and a hole or two).
+const DIRECT_WORK: usize = 512;
+
+/// Where no two rings meet (no position shared by two nodes, no vertex on an edge, no
+/// crossing) and they are few and small (see [`DIRECT_WORK`]): each ring's depth, counted
+/// directly as the rings whose winding number around its first node is not zero. Such
+/// rings are disjoint curves, so one vertex decides for the whole ring, and it lies on no
+/// other ring, so the winding number is exact. False, deciding nothing, otherwise.
+fn direct_depths(cx: &mut Context) -> bool {
+    if !cx.shared.is_empty() || !cx.crossings.is_empty() {
+        return false;
+    }
+    let (mut alive, mut edges) = (0, 0);
+    for ring in cx.rings.iter().filter(|r| r.alive) {
+        (alive, edges) = (alive + 1, edges + ring.len as usize);
+    }
+    if alive * edges > DIRECT_WORK {
+        return false;
+    }
+    for b in 0..cx.rings.len() {
+        if !cx.rings[b].alive {
+            continue;
+        }
+        let pool = &cx.pool;
+        let v = pool.p(cx.rings[b].start);
+        let around = |ring: &crate::triangulator::Ring| {
+            let winding: i64 = pool
+                .ring(ring.start)
+                .map(|n| crossing(pool.p(n), pool.p(pool.next(n)), v))
+                .sum();
+            winding != 0
+        };
+        let depth = (cx.rings.iter().enumerate())
+            .filter(|&(r, ring)| r != b && ring.alive && around(ring))
+            .count();
+        cx.rings[b].depth = depth as u32;
+    }
+    true
 }
 
 /// Lists every live edge in the grid index.

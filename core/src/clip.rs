@@ -62,9 +62,11 @@ pub(crate) struct ClipScratch {
     cells: Cells,
     /// Fast strategy: the ring's nodes by position, and the tips not marked "not an ear".
     tips: Tips,
-    /// Quality strategy: candidate ears (convex tips) by angle at the tip, with the node's
-    /// stamp when queued.
+    /// Quality strategy: candidate ears (convex tips) by angle at the tip (see [`ear`]).
     heap: EarQueue,
+    /// Quality strategy, by node: its stamp when last queued; an entry popped is current
+    /// only if the stamp has not moved since.
+    queued: Vec<u32>,
     /// Rings still to clip: pieces of a polygon split by a diagonal (lenient fallback).
     pending: Vec<NodeId>,
     /// Scratch of [`lay_out`]: new node ids by old, the polygons' starts, the node buffer.
@@ -78,100 +80,137 @@ pub(crate) struct ClipScratch {
     split_budget: usize,
 }
 
-/// The quality strategy's queue of candidate ears: (angle key, node, stamp), smallest
-/// first. A 4-ary heap: popping from a queue of a million ears touches half as
-/// many levels as a binary heap, and a node's four children share a cache line. Entries
-/// are totally ordered (equal ones are identical), so the pop order is that of any
-/// priority queue. Each entry is packed into one `u128` (key, node, stamp from the high
-/// bits down), which orders exactly as the tuple does and compares in two instructions.
+/// The quality strategy's queue of candidate ears, smallest first: entries packed by
+/// [`ear`], so that one integer comparison orders them by angle, then node. A node has at
+/// most one entry: queuing it again moves its entry (a neighbour's cut changes its angle),
+/// so no outdated entries pile up to be popped and skipped. A 4-ary heap: popping from a
+/// queue of a million ears touches half as many levels as a binary heap, and a node's
+/// four children share a cache line.
 #[derive(Debug, Default)]
 struct EarQueue {
-    items: Vec<u128>,
+    items: Vec<u64>,
+    /// By node: the index of its entry in `items`, if `items` holds one there (stale
+    /// indices are told by the node the entry names, so none are ever cleared).
+    at: Vec<u32>,
 }
 
-fn pack((key, node, stamp): Ear) -> u128 {
-    u128::from(key) << 64 | u128::from(node.0) << 32 | u128::from(stamp)
+/// A queue entry: the tip's angle rank (non-negative, so its bit pattern orders as the
+/// number; the sign bit dropped, then the top 32 bits of the rest, which tells ranks
+/// apart down to a relative 2⁻²¹) above the node id. Ranks closer than that tie, and
+/// then the node decides, as for equal ranks.
+fn ear(rank: f64, n: NodeId) -> u64 {
+    (rank.to_bits() << 1) >> 32 << 32 | u64::from(n.0)
 }
 
-fn unpack(item: u128) -> Ear {
-    (
-        (item >> 64) as u64,
-        NodeId((item >> 32) as u32),
-        item as u32,
-    )
+/// The node of a queue entry, as an index.
+fn ear_node(item: u64) -> usize {
+    item as u32 as usize
 }
 
 impl EarQueue {
-    fn clear(&mut self) {
+    /// Empties the queue, for nodes `0..nodes`.
+    fn clear(&mut self, nodes: usize) {
         self.items.clear();
+        if self.at.len() < nodes {
+            self.at.resize(nodes, 0);
+        }
     }
 
-    fn push(&mut self, item: Ear) {
-        let item = pack(item);
-        let mut i = self.items.len();
-        self.items.push(item);
+    /// Queues `item`, or moves its node's entry to it; ignores nodes past those the queue
+    /// was cleared for.
+    fn set(&mut self, item: u64) {
+        let Some(&i) = self.at.get(ear_node(item)) else {
+            return;
+        };
+        let i = i as usize;
+        match self.items.get(i) {
+            Some(&old) if ear_node(old) == ear_node(item) => {
+                if item < old {
+                    self.sift_up(i, item);
+                } else {
+                    self.sift_down(i, item);
+                }
+            }
+            _ => {
+                self.items.push(item);
+                self.sift_up(self.items.len() - 1, item);
+            }
+        }
+    }
+
+    /// Puts `item` at index `i`, recording where its node's entry is.
+    #[inline]
+    fn place(&mut self, i: usize, item: u64) {
+        self.items[i] = item;
+        self.at[ear_node(item)] = i as u32;
+    }
+
+    /// Moves `item`, meant for index `i`, up past the entries above it that are larger.
+    fn sift_up(&mut self, mut i: usize, item: u64) {
         while i > 0 {
             let parent = (i - 1) / 4;
-            if self.items[parent] <= item {
+            let above = self.items[parent];
+            if above <= item {
                 break;
             }
-            self.items[i] = self.items[parent];
+            self.place(i, above);
             i = parent;
         }
-        self.items[i] = item;
+        self.place(i, item);
     }
 
-    fn pop(&mut self) -> Option<Ear> {
-        let last = self.items.pop()?;
-        let Some(&top) = self.items.first() else {
-            return Some(unpack(last));
-        };
-        // sift `last` down from the root
-        let len = self.items.len();
-        let mut i = 0;
-        loop {
-            let first = 4 * i + 1;
-            if first >= len {
+    /// The index of the least child of `i`, and that child; `None` for a leaf.
+    #[inline]
+    fn least_child(&self, i: usize) -> Option<(usize, u64)> {
+        let first = 4 * i + 1;
+        match self.items.get(first..first + 4) {
+            // all four children: a tournament, two independent comparisons first
+            Some(&[a, b, c, d]) => {
+                let (one, x) = if b < a { (first + 1, b) } else { (first, a) };
+                let (two, y) = if d < c {
+                    (first + 3, d)
+                } else {
+                    (first + 2, c)
+                };
+                Some(if y < x { (two, y) } else { (one, x) })
+            }
+            _ => {
+                let children = self.items.get(first..)?;
+                let (k, &least) = children.iter().enumerate().min_by_key(|&(_, &c)| c)?;
+                Some((first + k, least))
+            }
+        }
+    }
+
+    /// Moves `item`, meant for index `i`, down past the entries below it that are smaller.
+    fn sift_down(&mut self, mut i: usize, item: u64) {
+        while let Some((child, least)) = self.least_child(i) {
+            if item <= least {
                 break;
             }
-            let (child, smallest) = match self.items.get(first..first + 4) {
-                // all four children: a tournament, two independent comparisons first
-                Some(&[a, b, c, d]) => {
-                    let (one, x) = if b < a { (first + 1, b) } else { (first, a) };
-                    let (two, y) = if d < c {
-                        (first + 3, d)
-                    } else {
-                        (first + 2, c)
-                    };
-                    if y < x {
-                        (two, y)
-                    } else {
-                        (one, x)
-                    }
-                }
-                _ => {
-                    let mut child = first;
-                    for c in first + 1..len {
-                        if self.items[c] < self.items[child] {
-                            child = c;
-                        }
-                    }
-                    (child, self.items[child])
-                }
-            };
-            if last <= smallest {
-                break;
-            }
-            self.items[i] = smallest;
+            self.place(i, least);
             i = child;
         }
-        self.items[i] = last;
-        Some(unpack(top))
+        self.place(i, item);
+    }
+
+    fn pop(&mut self) -> Option<u64> {
+        let last = self.items.pop()?;
+        let Some(&top) = self.items.first() else {
+            return Some(last);
+        };
+        // Floyd's bottom-up pop: move the hole at the root down to a leaf, always to the
+        // least child, without comparing with `last` (which came from the end, so usually
+        // belongs near the bottom), then sift `last` up from there
+        let mut i = 0;
+        while let Some((child, least)) = self.least_child(i) {
+            self.place(i, least);
+            i = child;
+        }
+        self.sift_up(i, last);
+        Some(top)
     }
 }
-
-/// A queued candidate ear: angle key, tip, and the tip's stamp when queued.
-type Ear = (u64, NodeId, u32);
 
 /// One polygon being clipped.
 struct Clipper<'a> {
@@ -476,12 +515,16 @@ impl<'a> Clipper<'a> {
 
     /// Mei et al.: always the ear with the smallest angle at its tip.
     fn quality(&mut self, start: NodeId) -> Result<(), Error> {
-        self.cx.clip.heap.clear();
+        let nodes = self.cx.pool.len();
+        self.cx.clip.heap.clear(nodes);
+        if self.cx.clip.queued.len() < nodes {
+            self.cx.clip.queued.resize(nodes, 0);
+        }
         self.seed_heap(start);
         let mut last = start;
         let mut rescanned = false;
         while self.len > 3 {
-            let Some((_, n, stamp)) = self.cx.clip.heap.pop() else {
+            let Some(item) = self.cx.clip.heap.pop() else {
                 if self.avoid_crossed {
                     // only ears at crossed edges are left: allow them, look again
                     self.avoid_crossed = false;
@@ -502,10 +545,12 @@ impl<'a> Clipper<'a> {
                 return self.fast(last);
             };
             // A candidate is tested when it comes up, not when queued: by then most
-            // queued tips have been touched again (a stale stamp), and a tip that was no
+            // queued tips have been touched again (a stale entry), and a tip that was no
             // ear when queued may have become one.
+            let n = NodeId(ear_node(item) as u32);
             let node = self.cx.pool.get(n);
-            if node.removed || node.stamp != stamp || !self.is_ear(n) {
+            let current = self.cx.clip.queued.get(n.idx()) == Some(&node.stamp);
+            if node.removed || !current || !self.is_ear(n) {
                 continue;
             }
             let prev = self.cx.pool.prev(n);
@@ -543,10 +588,11 @@ impl<'a> Clipper<'a> {
             return;
         }
         let (a, b, c) = self.corner(n);
-        // non-negative ranks order like their bit patterns
-        let key = approx_angle_rank(a, b, c).to_bits();
         let stamp = self.cx.pool.get(n).stamp;
-        self.cx.clip.heap.push((key, n, stamp));
+        if let Some(queued) = self.cx.clip.queued.get_mut(n.idx()) {
+            *queued = stamp;
+            self.cx.clip.heap.set(ear(approx_angle_rank(a, b, c), n));
+        }
     }
 
     /// Positions of `n`'s predecessor, `n` and its successor.
@@ -1213,8 +1259,6 @@ fn interferes(pool: &crate::pool::Pool, r: NodeId, q: Point, a: Point, b: Point,
 #[cfg(test)]
 mod tests {
     use super::*;
-    use std::cmp::Reverse;
-    use std::collections::BinaryHeap;
 
     /// Winding number of `ring` around the point just past `o` towards `q`.
     fn winding_past(ring: &[(f64, f64)], o: (f64, f64), q: (f64, f64)) -> i32 {
@@ -1250,22 +1294,46 @@ mod tests {
     }
 
     #[test]
-    fn ear_queue_pops_like_a_binary_heap() {
+    fn ear_queue_pops_the_least_entry_with_one_entry_per_node() {
         let mut random = crate::testing::random(0x9e37_79b9_7f4a_7c15);
-        let (mut queue, mut heap) = (EarQueue::default(), BinaryHeap::new());
-        for _ in 0..20_000 {
-            if random(3) < 2 {
-                // few distinct keys and nodes: ties and duplicates happen
-                let item = (random(50), NodeId(random(40) as u32), random(3) as u32);
-                queue.push(item);
-                heap.push(Reverse(item));
-            } else {
-                assert_eq!(queue.pop(), heap.pop().map(|Reverse(item)| item));
+        let mut queue = EarQueue::default();
+        // the model: each node's entry, if queued
+        let mut model = std::collections::BTreeMap::new();
+        let least = |model: &std::collections::BTreeMap<u32, u64>| model.values().min().copied();
+        for round in 0..2 {
+            queue.clear(40);
+            model.clear();
+            for _ in 0..20_000 {
+                if random(3) < 2 {
+                    // few distinct ranks and nodes: ties and moved entries happen
+                    let node = random(40) as u32;
+                    let item = ear(random(50) as f64 / 25.0, NodeId(node));
+                    queue.set(item);
+                    model.insert(node, item);
+                } else {
+                    let expected = least(&model);
+                    if let Some(item) = expected {
+                        model.remove(&(ear_node(item) as u32));
+                    }
+                    assert_eq!(queue.pop(), expected, "round {round}");
+                }
             }
+            while let Some(item) = least(&model) {
+                model.remove(&(ear_node(item) as u32));
+                assert_eq!(queue.pop(), Some(item));
+            }
+            assert_eq!(queue.pop(), None);
         }
-        while let Some(Reverse(item)) = heap.pop() {
-            assert_eq!(queue.pop(), Some(item));
-        }
-        assert_eq!(queue.pop(), None);
+    }
+
+    #[test]
+    fn ear_entries_order_by_rank_then_node() {
+        let (a, b) = (NodeId(3), NodeId(70_000));
+        assert!(ear(0.25, b) < ear(0.5, a));
+        assert!(ear(0.5, a) < ear(0.5, b));
+        assert!(ear(1.999, b) < ear(2.0, a));
+        // ranks closer than 2^-21 relative tie, and the node decides
+        assert!(ear(0.5 + 1e-9, a) < ear(0.5, b));
+        assert_eq!(ear_node(ear(2.0, b)), b.idx());
     }
 }

@@ -544,9 +544,9 @@ impl<'a> Clipper<'a> {
                 last = self.stuck(last)?;
                 return self.fast(last);
             };
-            // A candidate is tested when it comes up, not when queued: by then most
-            // queued tips have been touched again (a stale entry), and a tip that was no
-            // ear when queued may have become one.
+            // A candidate is tested when it comes up, not when queued: a tip that was no
+            // ear when queued may have become one. One touched since and not queued again
+            // (it turned reflex, say) is skipped.
             let n = NodeId(ear_node(item) as u32);
             let node = self.cx.pool.get(n);
             let current = self.cx.clip.queued.get(n.idx()) == Some(&node.stamp);

@@ -315,8 +315,17 @@ fn depth_of(cx: &mut Context, b: usize) -> u32 {
     // some of its vertices, decides the third ring elsewhere than the second).
     let mut v = cx.pool.next(first);
     while v != first && !cx.order.is_empty() {
-        depth += decide_open_at(cx, b, v);
+        depth += decide_open_at(cx, b, v, Probe::Clear);
         v = cx.pool.next(v);
+    }
+    // Rings no vertex decided with a clear probe: at the first vertex with an edge off them.
+    let mut v = first;
+    while !cx.order.is_empty() {
+        depth += decide_open_at(cx, b, v, Probe::OffRing);
+        v = cx.pool.next(v);
+        if v == first {
+            break;
+        }
     }
     if cx.order.is_empty() {
         depth
@@ -486,22 +495,34 @@ fn decide_at(cx: &mut Context, b: usize, v: NodeId) -> u32 {
             return depth;
         }
     }
-    let (winding, depth) = decide_listed(cx, b, v);
+    let (winding, depth) = decide_listed(cx, b, v, Probe::Clear);
     winding.max(0) as u32 + depth
+}
+
+/// Which of b's edges at a vertex v may tell whether b lies inside a ring r passing
+/// through v (see [`locally_inside`]).
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+enum Probe {
+    /// Only an edge along no other ring through v. Along another ring q, b's boundary may
+    /// be cancelled by q's (b and q bounding one region from both sides), and r may cross
+    /// the two of them there at once, as valid input allows: b then lies partly inside r.
+    Clear,
+    /// Any edge not along r: where no vertex of b has a clear probe.
+    OffRing,
 }
 
 /// How many of the rings still open (`cx.order`) contain ring `b`, decided at b's node `v`
 /// as [`decide_at`] decides them; those it cannot decide there stay in `cx.order`.
-fn decide_open_at(cx: &mut Context, b: usize, v: NodeId) -> u32 {
+fn decide_open_at(cx: &mut Context, b: usize, v: NodeId, probe: Probe) -> u32 {
     set_slots(&cx.order, &mut cx.ring_slot);
-    decide_listed(cx, b, v).1
+    decide_listed(cx, b, v, probe).1
 }
 
 /// Decides at b's node `v` which rings of `cx.order` (their places set in `cx.ring_slot`,
 /// cleared here) contain ring `b`: one off v's position by its winding number, one through
 /// it by its corner there ([`locally_inside`]); those undecided stay in `cx.order`.
 /// Returns the winding number of the other rings, and how many of `cx.order` contain b.
-fn decide_listed(cx: &mut Context, b: usize, v: NodeId) -> (i64, u32) {
+fn decide_listed(cx: &mut Context, b: usize, v: NodeId, probe: Probe) -> (i64, u32) {
     let pv = cx.pool.p(v);
     let mut slot = core::mem::take(&mut cx.ring_slot);
     let mut beyond = core::mem::take(&mut cx.touch_winding);
@@ -513,11 +534,23 @@ fn decide_listed(cx: &mut Context, b: usize, v: NodeId) -> (i64, u32) {
     // the listed rings' edges through V, turned, grouped by ring
     let mut edges = core::mem::take(&mut cx.hub_edges);
     edges.clear();
+    // whether b's edges at v (to its successor, from its predecessor) run along another
+    // ring's edge through v
+    let (vn, vp) = (cx.pool.p(cx.pool.next(v)), cx.pool.p(cx.pool.prev(v)));
+    let mut shared = [false; 2];
     for n in cx.edge_grid.query(pv, pv) {
         let node = cx.pool.get(n);
         let (k, next) = (slot[node.ring as usize], cx.pool.p(node.next));
-        if k != NO_SLOT && !node.removed && on_segment(node.p, next, pv) {
+        if node.removed || !on_segment(node.p, next, pv) {
+            continue;
+        }
+        if k != NO_SLOT {
             edges.push((k, ray.turn(node.p), ray.turn(next)));
+        }
+        if probe == Probe::Clear && node.ring as usize != b {
+            for (d, along) in [vn, vp].into_iter().zip(&mut shared) {
+                *along |= [node.p, next].into_iter().any(|e| on_ray(pv, e, d));
+            }
         }
     }
     edges.sort_unstable_by_key(|e| e.0);
@@ -532,7 +565,7 @@ fn decide_listed(cx: &mut Context, b: usize, v: NodeId) -> (i64, u32) {
         let decided = if from == to {
             Some(base > 0)
         } else {
-            locally_inside(cx, v, &edges[from..to], ray, base)
+            locally_inside(cx, v, &edges[from..to], ray, base, shared)
         };
         match decided {
             Some(inside) => depth += u32::from(inside),
@@ -871,6 +904,7 @@ fn locally_inside(
     r_edges: &[(u32, Point, Point)],
     ray: Ray,
     base: i64,
+    shared: [bool; 2],
 ) -> Option<bool> {
     let pv = cx.pool.p(v);
     let o = ray.turn(pv);
@@ -891,8 +925,20 @@ fn locally_inside(
         ray.turn(cx.pool.p(cx.pool.next(v))),
         ray.turn(cx.pool.p(cx.pool.prev(v))),
     );
-    if let Some(d) = [vn, vp].into_iter().find(|&d| !along_r(d)) {
-        return Some(winding_after(d) > 0);
+    let off_r = [vn, vp]
+        .into_iter()
+        .zip(shared)
+        .filter(|&(d, _)| !along_r(d));
+    let mut blocked = false;
+    for (d, along_other) in off_r {
+        if !along_other {
+            return Some(winding_after(d) > 0);
+        }
+        blocked = true;
+    }
+    if blocked {
+        // b's only edges off r run along other rings: decided elsewhere (see `Probe`)
+        return None;
     }
     let inside_corner = |e: Point| e != o && corner_contains(o, vn, vp, e) == Some(true);
     let sectors = core::iter::once(vn).chain(

@@ -888,7 +888,9 @@ fn crossing(a: Point, b: Point, v: Point) -> i64 {
 /// corners at v, none of which alone tells):
 ///
 /// - on one of b's edges at v that does not run along `r` (a point of b's boundary off r,
-///   as the oracle probes it);
+///   as the oracle probes it), and along no other ring through v (`shared`, filled for
+///   [`Probe::Clear`]): where one of them does and the other runs along `r`, nothing is
+///   decided here (`None`);
 /// - else, with both of b's edges along `r`, in every sector between r's edges inside b's
 ///   corner: one outside `r` shows that b is not inside it; all inside leave it open
 ///   (`None`), since b's corner may be r's very corner (a hole cancelling a lobe).

@@ -67,6 +67,9 @@ pub(crate) struct ClipScratch {
     /// Quality strategy, by node: its stamp when last queued; an entry popped is current
     /// only if the stamp has not moved since.
     queued: Vec<u32>,
+    /// Quality strategy, by node: the reflex node that spoiled its last long ear test,
+    /// looked at first next time (see `Clipper::is_ear_remembering`); any id, or none.
+    spoiler: Vec<NodeId>,
     /// Rings still to clip: pieces of a polygon split by a diagonal (lenient fallback).
     pending: Vec<NodeId>,
     /// Scratch of [`lay_out`]: new node ids by old, the polygons' starts, the node buffer.
@@ -232,6 +235,10 @@ struct Clipper<'a> {
     walking: bool,
 }
 
+/// A quality ear test that looked at more candidates than this before one spoiled the
+/// ear keeps that one, to look at first next time (see `Clipper::is_ear_remembering`).
+const SPOILER_AFTER: usize = 16;
+
 /// Edge tests the lenient split search may spend per `clip` call (see
 /// `ClipScratch::split_budget`): a few milliseconds.
 const SPLIT_BUDGET: usize = 1 << 22;
@@ -247,6 +254,9 @@ pub(crate) fn clip(
 ) -> Result<usize, Error> {
     let mut polygons = 0;
     cx.clip.split_budget = SPLIT_BUDGET;
+    if strategy == Strategy::Quality && cx.clip.spoiler.len() < cx.pool.len() {
+        cx.clip.spoiler.resize(cx.pool.len(), NodeId(u32::MAX));
+    }
     if strategy == Strategy::Fast && cx.pool.len() >= LAY_OUT_MIN {
         lay_out(cx);
     }
@@ -550,7 +560,7 @@ impl<'a> Clipper<'a> {
             let n = NodeId(ear_node(item) as u32);
             let node = self.cx.pool.get(n);
             let current = self.cx.clip.queued.get(n.idx()) == Some(&node.stamp);
-            if node.removed || !current || !self.is_ear(n) {
+            if node.removed || !current || !self.is_ear_remembering(n) {
                 continue;
             }
             let prev = self.cx.pool.prev(n);
@@ -601,21 +611,73 @@ impl<'a> Clipper<'a> {
         (pool.p(pool.prev(n)), pool.p(n), pool.p(pool.next(n)))
     }
 
-    /// Whether a → b → c, with b = `ear`, can be cut (see the module docs).
-    fn is_ear(&self, ear: NodeId) -> bool {
+    /// The neighbours of `ear` when its tip may be cut, before looking for reflex nodes in
+    /// the way: `None` when it turns right or straight (`reflex`, the exact turn, kept up
+    /// to date by `reclassify`) or uses a crossed edge that is to wait.
+    #[inline(always)]
+    fn may_be_ear(&self, ear: NodeId) -> Option<(NodeId, NodeId)> {
         let pool = &self.cx.pool;
         let (an, cn) = (pool.prev(ear), pool.next(ear));
-        // `reflex` is the exact turn at the tip, kept up to date by `reclassify`
-        if pool.get(ear).reflex {
+        let waits = self.avoid_crossed && (pool.get(an).crossed || pool.get(ear).crossed);
+        (!pool.get(ear).reflex && !waits).then_some((an, cn))
+    }
+
+    /// Whether a → b → c, with b = `ear`, can be cut (see the module docs). Out of line,
+    /// so that `interferes` stays inlined in it (measured: the other way round is slower).
+    #[inline(never)]
+    fn is_ear(&self, ear: NodeId) -> bool {
+        let Some((an, cn)) = self.may_be_ear(ear) else {
             return false;
-        }
+        };
+        let pool = &self.cx.pool;
         let (a, b, c) = (pool.p(an), pool.p(ear), pool.p(cn));
-        if self.avoid_crossed && (pool.get(an).crossed || pool.get(ear).crossed) {
-            return false;
-        }
         !self.any_reflex_near(a, b, c, |r, q| {
             r != an && r != ear && r != cn && interferes(pool, r, q, a, b, c)
         })
+    }
+
+    /// [`Clipper::is_ear`], for the quality strategy: the node that spoiled this tip's last
+    /// long test usually still does, and is looked at first. Quality tests a tip again
+    /// whenever a neighbour moves, and its sharpest tips may be large triangles whose boxes
+    /// hold thousands of reflex nodes before the first that spoils them (a square's corner
+    /// over a ring of holes: 300 a test on average, where fast's tests see one). Only the
+    /// order of the search changes, not its answer.
+    #[inline(never)]
+    fn is_ear_remembering(&mut self, ear: NodeId) -> bool {
+        if !self.indexed {
+            // few reflex nodes: every test is short
+            return self.is_ear(ear);
+        }
+        let Some((an, cn)) = self.may_be_ear(ear) else {
+            return false;
+        };
+        let pool = &self.cx.pool;
+        let (a, b, c) = (pool.p(an), pool.p(ear), pool.p(cn));
+        let spoils =
+            |r: NodeId, q: Point| r != an && r != ear && r != cn && interferes(pool, r, q, a, b, c);
+        let last = self.cx.clip.spoiler.get(ear.idx()).copied();
+        if let Some(r) = last.filter(|r| r.idx() < pool.len()) {
+            let (node, (lo, hi)) = (pool.get(r), bounds(a, b, c));
+            if !node.removed && node.reflex && near(lo, hi, node.p) && spoils(r, node.p) {
+                return false;
+            }
+        }
+        let (mut looked, mut spoiler) = (0, None);
+        let spoilt = self.any_reflex_near(a, b, c, |r, q| {
+            looked += 1;
+            let spoilt = spoils(r, q);
+            if spoilt {
+                spoiler = Some(r);
+            }
+            spoilt
+        });
+        // (kept where the search was long: storing costs more than it saves otherwise)
+        if looked > SPOILER_AFTER {
+            if let (Some(r), Some(slot)) = (spoiler, self.cx.clip.spoiler.get_mut(ear.idx())) {
+                *slot = r;
+            }
+        }
+        !spoilt
     }
 
     /// Whether `test` holds for a live reflex node (id and position) in the bounding box of
@@ -628,18 +690,8 @@ impl<'a> Clipper<'a> {
         mut test: impl FnMut(NodeId, Point) -> bool,
     ) -> bool {
         let pool = &self.cx.pool;
-        // coordinates are finite: plain comparisons, without `f64::min`'s NaN handling
-        let min = |s: f64, t: f64| if t < s { t } else { s };
-        let max = |s: f64, t: f64| if t > s { t } else { s };
-        let lo = Point::new(min(min(a.x, b.x), c.x), min(min(a.y, b.y), c.y));
-        let hi = Point::new(max(max(a.x, b.x), c.x), max(max(a.y, b.y), c.y));
-        let near = |q: Point| {
-            q.x >= lo.x
-                && q.x <= hi.x
-                && !(PLANTED_BUG && q.x == hi.x)
-                && q.y >= lo.y
-                && q.y <= hi.y
-        };
+        let (lo, hi) = bounds(a, b, c);
+        let near = |q: Point| near(lo, hi, q);
         let live = |r: NodeId| {
             let node = pool.get(r);
             !node.removed && node.reflex
@@ -1127,6 +1179,23 @@ fn remove_walls(cx: &mut Context, start: NodeId) -> NodeId {
 fn sees(pool: &crate::pool::Pool, n: NodeId, q: Point) -> bool {
     let o = pool.p(n);
     corner_contains(o, pool.p(pool.next(n)), pool.p(pool.prev(n)), q) != Some(false)
+}
+
+/// The bounding box of a, b, c (finite: plain comparisons, without `f64::min`'s NaN
+/// handling).
+#[inline(always)]
+fn bounds(a: Point, b: Point, c: Point) -> (Point, Point) {
+    let min = |s: f64, t: f64| if t < s { t } else { s };
+    let max = |s: f64, t: f64| if t > s { t } else { s };
+    let lo = Point::new(min(min(a.x, b.x), c.x), min(min(a.y, b.y), c.y));
+    let hi = Point::new(max(max(a.x, b.x), c.x), max(max(a.y, b.y), c.y));
+    (lo, hi)
+}
+
+/// Whether `q` lies in the box `lo..=hi`, as the ear test's candidates must.
+#[inline(always)]
+fn near(lo: Point, hi: Point, q: Point) -> bool {
+    q.x >= lo.x && q.x <= hi.x && !(PLANTED_BUG && q.x == hi.x) && q.y >= lo.y && q.y <= hi.y
 }
 
 /// Whether segments a–b and c–d cross at a point interior to both.

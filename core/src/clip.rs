@@ -254,9 +254,6 @@ pub(crate) fn clip(
 ) -> Result<usize, Error> {
     let mut polygons = 0;
     cx.clip.split_budget = SPLIT_BUDGET;
-    if strategy == Strategy::Quality && cx.clip.spoiler.len() < cx.pool.len() {
-        cx.clip.spoiler.resize(cx.pool.len(), NodeId(u32::MAX));
-    }
     if strategy == Strategy::Fast && cx.pool.len() >= LAY_OUT_MIN {
         lay_out(cx);
     }
@@ -529,6 +526,7 @@ impl<'a> Clipper<'a> {
         self.cx.clip.heap.clear(nodes);
         if self.cx.clip.queued.len() < nodes {
             self.cx.clip.queued.resize(nodes, 0);
+            self.cx.clip.spoiler.resize(nodes, NodeId(u32::MAX));
         }
         self.seed_heap(start);
         let mut last = start;

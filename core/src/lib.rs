@@ -54,5 +54,5 @@ mod validate;
 pub use error::Error;
 pub use options::{Nesting, Options, Strategy};
 pub use predicates::Orientation;
-pub use report::{DropReason, Dropped, Repair, RepairKind, Report};
+pub use report::{deviation, DropReason, Dropped, Repair, RepairKind, Report};
 pub use triangulator::{Coord, Triangulator};

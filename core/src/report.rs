@@ -84,3 +84,30 @@ impl Report<'_> {
         self.repairs.is_empty()
     }
 }
+
+/// earcut's deviation: `|area(polygon) − Σ area(triangles)| / area(polygon)`, 0 when both
+/// areas are 0 and 1 when only the polygon's is (or when the quotient is not finite).
+///
+/// The one formula that polytri's lenient mode, its oracle and its tests use to compare a
+/// triangulation's area with its input's. Both areas are taken as given (unsigned, or
+/// signed alike); only their relative difference is computed.
+///
+/// ```
+/// assert_eq!(polytri::deviation(4.0, 3.0), 0.25);
+/// assert_eq!(polytri::deviation(0.0, 0.0), 0.0);
+/// assert_eq!(polytri::deviation(0.0, 2.0), 1.0);
+/// ```
+pub fn deviation(polygon_area: f64, triangles_area: f64) -> f64 {
+    let d = if polygon_area == 0.0 && triangles_area == 0.0 {
+        0.0
+    } else if polygon_area == 0.0 {
+        1.0
+    } else {
+        ((polygon_area - triangles_area) / polygon_area).abs()
+    };
+    if d.is_finite() {
+        d
+    } else {
+        1.0
+    }
+}

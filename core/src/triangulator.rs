@@ -341,10 +341,7 @@ fn deviation<T: Coord>(area: f64, vertices: &[[T; 2]], triangles: &[[u32; 3]]) -
         .iter()
         .map(|t| crate::predicates::approx_double_area(p(t[0]), p(t[1]), p(t[2])).abs())
         .sum();
-    if area == 0.0 {
-        return if covered == 0.0 { 0.0 } else { f64::INFINITY };
-    }
-    ((covered - area) / area).abs()
+    crate::deviation(area, covered)
 }
 
 /// Twice the input's area: outer rings minus holes (by nesting depth), shoelace formula.

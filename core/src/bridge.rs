@@ -25,9 +25,10 @@
 
 use core::cmp::Ordering;
 
-use crate::nest::{corner_contains, index_all_edges, on_ray, skip_ring};
-use crate::pool::NodeId;
-use crate::predicates::{left_of, orient2d, Orientation, Point};
+use crate::geom::{compare_hits, corner_contains, on_ray};
+use crate::geom::{left_of, orient2d, Orientation, Point};
+use crate::nest::{index_all_edges, skip_ring};
+use crate::structures::NodeId;
 use crate::triangulator::Context;
 use crate::Error;
 
@@ -182,7 +183,7 @@ fn bridge_from_elsewhere(
             let mut clear = true;
             while cx.pool.next(e) != v {
                 let (a, b) = (cx.pool.p(e), cx.pool.p(cx.pool.next(e)));
-                if crate::clip::crosses(pv, px, a, b) {
+                if crate::geom::crosses(pv, px, a, b) {
                     clear = false;
                     break;
                 }
@@ -214,7 +215,7 @@ fn bridge_leaves_polygon(cx: &Context, m: NodeId, x: NodeId) -> bool {
     let hi = Point::new(pm.x.max(px.x), pm.y.max(px.y));
     cx.edge_grid
         .query(lo, hi)
-        .any(|e| is_merged(cx, e) && crate::clip::crosses(pm, px, pool.p(e), pool.p(pool.next(e))))
+        .any(|e| is_merged(cx, e) && crate::geom::crosses(pm, px, pool.p(e), pool.p(pool.next(e))))
 }
 
 /// How a hole connects.
@@ -341,42 +342,6 @@ fn consider_hit(cx: &Context, pm: Point, a: NodeId, best: &mut Option<(NodeId, N
     if nearer {
         *best = Some((a, b));
     }
-}
-
-/// Compares where two upward edges a → b and c → d, both spanning height `y`, meet the
-/// line at `y`: `Less` when c → d meets it further left (nearer), exactly.
-///
-/// A point left of an upward line has a smaller x at the same height. If c and d lie on
-/// one side of the line through a, b, so does the hit of c → d; otherwise, for
-/// non-crossing edges, a and b lie on one side of the line through c, d.
-pub(crate) fn compare_hits(y: f64, a: Point, b: Point, c: Point, d: Point) -> Ordering {
-    if let Some(ord) = side_of_line(y, a, b, c, d) {
-        return ord;
-    }
-    if let Some(ord) = side_of_line(y, c, d, a, b) {
-        return ord.reverse();
-    }
-    // the edges cross (lenient input only): no exact answer exists, estimate
-    let hit = |p: Point, q: Point| p.x + (y - p.y) / (q.y - p.y) * (q.x - p.x);
-    hit(c, d).total_cmp(&hit(a, b))
-}
-
-/// Where c → d meets height `y` relative to the line a → b there, when c and d are on one
-/// side of that line (or on it): `Less` left, `Greater` right, `Equal` on it.
-fn side_of_line(y: f64, a: Point, b: Point, c: Point, d: Point) -> Option<Ordering> {
-    let (oc, od) = (orient2d(a, b, c), orient2d(a, b, d));
-    use Orientation::*;
-    let ord = match (oc, od) {
-        (Collinear, Collinear) => return Some(Ordering::Equal),
-        (CounterClockwise, Clockwise) | (Clockwise, CounterClockwise) => return None,
-        (CounterClockwise, _) | (_, CounterClockwise) => Ordering::Less,
-        _ => Ordering::Greater,
-    };
-    // one endpoint on the line exactly at height y: that endpoint is the hit of both
-    if (oc == Collinear && c.y == y) || (od == Collinear && d.y == y) {
-        return Some(Ordering::Equal);
-    }
-    Some(ord)
 }
 
 /// Among the vertices of `component` inside triangle M, I, P (I: the hit on edge a → b) or

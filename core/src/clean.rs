@@ -14,10 +14,10 @@
 //! 5. Find each ring's rightmost vertex (ties: lowest y), its winding from the turn there,
 //!    and make every ring counter-clockwise. No winding order is assumed from the caller.
 
-use crate::pool::NodeId;
-use crate::predicates::{cmp_xy, on_segment, orient2d, within_box, Orientation, Point};
+use crate::geom::{cmp_xy, on_segment, orient2d, within_box, Orientation, Point};
 use crate::prune;
 use crate::report::{DropReason, Dropped, RepairKind};
+use crate::structures::NodeId;
 use crate::triangulator::Context;
 use crate::validate::{self, Crossing};
 use crate::Error;
@@ -226,7 +226,7 @@ fn sweep_filtered(cx: &mut Context, untwist: bool) -> Result<Option<bool>, Error
         let crossed = |a: NodeId| (pool.p(a), pool.p(pool.next(a)));
         let still_crossed = cx.crossings.iter().any(|c| {
             let ((a, b), (p, q)) = (crossed(c.a), crossed(c.b));
-            crate::clip::crosses(a, b, p, q)
+            crate::geom::crosses(a, b, p, q)
         });
         // (relinking may have left collinear turns)
         if still_crossed {
@@ -328,7 +328,7 @@ fn untwist_bow_ties(cx: &mut Context) -> bool {
             let pool = &mut cx.pool;
             let (a, q) = (pool.prev(p), pool.next(p));
             let b = pool.next(q);
-            if a != b && crate::clip::crosses(pool.p(a), pool.p(p), pool.p(q), pool.p(b)) {
+            if a != b && crate::geom::crosses(pool.p(a), pool.p(p), pool.p(q), pool.p(b)) {
                 pool.get_mut(a).next = q;
                 pool.get_mut(q).prev = a;
                 pool.get_mut(q).next = p;
@@ -608,7 +608,7 @@ fn lowest_net_arrives(
 #[cfg(test)]
 mod tests {
     use super::net_boundary_counter_clockwise;
-    use crate::pool::Pool;
+    use crate::structures::Pool;
     use crate::triangulator::Context;
 
     /// The ring's winding read on its net boundary, in both directions and from every start.

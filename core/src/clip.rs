@@ -25,12 +25,14 @@
 //! A ring with no ear left is not a valid polygon (or this is a bug): strict mode reports an
 //! internal error, lenient mode cuts a best-effort triangle and says so.
 
-use crate::grid::Cells;
-use crate::nest::corner_contains;
-use crate::pool::NodeId;
-use crate::predicates::{approx_angle_rank, left_of, orient2d, within_box, Orientation, Point};
+use crate::geom::corner_contains;
+use crate::geom::{
+    approx_angle_rank, crosses, left_of, orient2d, overlaps, segments_meet, Orientation, Point,
+};
 use crate::report::RepairKind;
-use crate::tips::Tips;
+use crate::structures::Cells;
+use crate::structures::NodeId;
+use crate::structures::Tips;
 use crate::triangulator::Context;
 use crate::{Error, Strategy};
 
@@ -75,7 +77,7 @@ pub(crate) struct ClipScratch {
     /// Scratch of [`lay_out`]: new node ids by old, the polygons' starts, the node buffer.
     renamed: Vec<u32>,
     starts: Vec<NodeId>,
-    spare: Vec<crate::pool::Node>,
+    spare: Vec<crate::structures::Node>,
     /// Edge tests the lenient split search may still spend in this `clip` call. One budget
     /// for the whole call, not one per split: on garbage input every stuck piece tries a
     /// split, and a per-split budget multiplied by the number of pieces is unbounded in
@@ -283,7 +285,7 @@ pub(crate) fn clip(
 const LAY_OUT_MIN: usize = 1 << 14;
 
 /// Renumbers the nodes so that each polygon's ring runs through consecutive ids (see
-/// [`crate::pool::Pool::lay_out`]), and the ring table with them.
+/// [`crate::structures::Pool::lay_out`]), and the ring table with them.
 fn lay_out(cx: &mut Context) {
     let clip = &mut cx.clip;
     clip.starts.clear();
@@ -1174,7 +1176,7 @@ fn remove_walls(cx: &mut Context, start: NodeId) -> NodeId {
 
 /// Whether the direction from node `n` towards `q` leaves `n` into the polygon (strictly
 /// inside its corner, or along one of its sides).
-fn sees(pool: &crate::pool::Pool, n: NodeId, q: Point) -> bool {
+fn sees(pool: &crate::structures::Pool, n: NodeId, q: Point) -> bool {
     let o = pool.p(n);
     corner_contains(o, pool.p(pool.next(n)), pool.p(pool.prev(n)), q) != Some(false)
 }
@@ -1194,17 +1196,6 @@ fn bounds(a: Point, b: Point, c: Point) -> (Point, Point) {
 #[inline(always)]
 fn near(lo: Point, hi: Point, q: Point) -> bool {
     q.x >= lo.x && q.x <= hi.x && !(PLANTED_BUG && q.x == hi.x) && q.y >= lo.y && q.y <= hi.y
-}
-
-/// Whether segments a–b and c–d cross at a point interior to both.
-pub(crate) fn crosses(a: Point, b: Point, c: Point, d: Point) -> bool {
-    use Orientation::*;
-    if boxes_apart(a, b, c, d) {
-        return false;
-    }
-    let (o1, o2) = (orient2d(a, b, c), orient2d(a, b, d));
-    let (o3, o4) = (orient2d(c, d, a), orient2d(c, d, b));
-    o1 != Collinear && o2 != Collinear && o1 != o2 && o3 != Collinear && o4 != Collinear && o3 != o4
 }
 
 /// Signed crossing of edge e → f with the ray towards +x from the point just past `o` on
@@ -1231,50 +1222,6 @@ fn crossing_past(e: Point, f: Point, o: Point, q: Point) -> i32 {
     }
 }
 
-/// Whether the bounding boxes of segments a–b and c–d are disjoint (comparisons only,
-/// exact): then the segments have no point in common, and no predicate is needed.
-#[inline]
-fn boxes_apart(a: Point, b: Point, c: Point, d: Point) -> bool {
-    a.x.max(b.x) < c.x.min(d.x)
-        || c.x.max(d.x) < a.x.min(b.x)
-        || a.y.max(b.y) < c.y.min(d.y)
-        || c.y.max(d.y) < a.y.min(b.y)
-}
-
-/// Whether closed segments a–b and c–d have a point in common.
-fn segments_meet(a: Point, b: Point, c: Point, d: Point) -> bool {
-    use Orientation::*;
-    if boxes_apart(a, b, c, d) {
-        return false;
-    }
-    let (o1, o2) = (orient2d(a, b, c), orient2d(a, b, d));
-    let (o3, o4) = (orient2d(c, d, a), orient2d(c, d, b));
-    if o1 != o2
-        && o3 != o4
-        && o1 != Collinear
-        && o2 != Collinear
-        && o3 != Collinear
-        && o4 != Collinear
-    {
-        return true;
-    }
-    (o1 == Collinear && within_box(a, b, c))
-        || (o2 == Collinear && within_box(a, b, d))
-        || (o3 == Collinear && within_box(c, d, a))
-        || (o4 == Collinear && within_box(c, d, b))
-        || (o1 != Collinear && o2 != Collinear && o1 != o2 && o3 != o4)
-}
-
-/// For segments sharing an endpoint: whether they run along each other for a while.
-fn overlaps(a: Point, b: Point, c: Point, d: Point) -> bool {
-    orient2d(a, b, c) == Orientation::Collinear
-        && orient2d(a, b, d) == Orientation::Collinear
-        && ((c != a && c != b && within_box(a, b, c))
-            || (d != a && d != b && within_box(a, b, d))
-            || (a != c && a != d && within_box(c, d, a))
-            || (b != c && b != d && within_box(c, d, b)))
-}
-
 /// The turn prev(n) → n → next(n).
 fn turn(cx: &Context, n: NodeId) -> Orientation {
     let pool = &cx.pool;
@@ -1285,7 +1232,14 @@ fn turn(cx: &Context, n: NodeId) -> Orientation {
 /// inside, inside the diagonal a–c, or on the boundary with an edge running inside.
 /// `q` is the position of `r`.
 #[inline]
-fn interferes(pool: &crate::pool::Pool, r: NodeId, q: Point, a: Point, b: Point, c: Point) -> bool {
+fn interferes(
+    pool: &crate::structures::Pool,
+    r: NodeId,
+    q: Point,
+    a: Point,
+    b: Point,
+    c: Point,
+) -> bool {
     use Orientation::*;
     // most candidates lie outside: stop at the first side that says so
     let oab = orient2d(a, b, q);

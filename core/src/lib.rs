@@ -35,24 +35,21 @@ mod bridge;
 mod clean;
 mod clip;
 mod error;
-mod grid;
+mod geom;
 mod load;
 mod lobes;
 mod nest;
 mod options;
-mod pool;
-mod predicates;
 mod prune;
 mod report;
+mod structures;
 #[cfg(test)]
 mod testing;
-mod tips;
 mod touch;
 mod triangulator;
 mod validate;
 
 pub use error::Error;
 pub use options::{Nesting, Options, Strategy};
-pub use predicates::Orientation;
 pub use report::{deviation, DropReason, Dropped, Repair, RepairKind, Report};
 pub use triangulator::{Coord, Triangulator};

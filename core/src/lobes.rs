@@ -40,8 +40,8 @@
 //! not, and a lobe inside the rest turning the same way, where no other ring cancels it,
 //! as `Error::RingWindsTwice` (see `touch`).
 
-use crate::pool::NodeId;
-use crate::predicates::{cmp_around, cmp_xy, Point};
+use crate::geom::{cmp_around, cmp_xy, Point};
+use crate::structures::NodeId;
 use crate::triangulator::{Context, Ring};
 use core::cmp::Ordering;
 

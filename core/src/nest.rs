@@ -23,10 +23,10 @@
 //! Finally holes are turned clockwise, so that in every ring the polygon's interior lies to
 //! the left of each edge — the convention `bridge` and `clip` rely on.
 
-use crate::bridge::compare_hits;
-use crate::pool::NodeId;
-use crate::predicates::{cmp_around, cmp_xy, left_of, on_segment, orient2d, Orientation, Point};
+use crate::geom::{cmp_around, cmp_xy, left_of, on_segment, orient2d, Orientation, Point};
+use crate::geom::{compare_hits, corner_contains, on_ray};
 use crate::report::{DropReason, Dropped, RepairKind};
+use crate::structures::NodeId;
 use crate::triangulator::Context;
 use crate::{Error, Nesting};
 use core::cmp::Ordering;
@@ -954,46 +954,6 @@ fn locally_inside(
     } else {
         None
     }
-}
-
-/// Whether the direction from `o` to `q` lies inside the corner at `o` swept
-/// counter-clockwise from `o → a` to `o → b`: `Some(true)` strictly inside, `Some(false)`
-/// strictly outside, `None` along one of its two sides.
-pub(crate) fn corner_contains(o: Point, a: Point, b: Point, q: Point) -> Option<bool> {
-    let qa = orient2d(o, a, q);
-    let qb = orient2d(o, b, q);
-    if (qa == Orientation::Collinear && same_ray(o, a, q))
-        || (qb == Orientation::Collinear && same_ray(o, b, q))
-    {
-        return None;
-    }
-    let inside = match orient2d(o, a, b) {
-        // convex corner: left of o→a and right of o→b
-        Orientation::CounterClockwise => {
-            qa == Orientation::CounterClockwise && qb == Orientation::Clockwise
-        }
-        // reflex corner: the complement of the convex corner from o→b to o→a
-        Orientation::Clockwise => {
-            qa == Orientation::CounterClockwise || qb == Orientation::Clockwise
-        }
-        // straight corner (a, o, b on a line, opposite rays): the left half-plane of o→a;
-        // a zero-width corner (same ray) contains nothing
-        Orientation::Collinear => !same_ray(o, a, b) && qa == Orientation::CounterClockwise,
-    };
-    Some(inside)
-}
-
-/// Whether `q` lies on the ray from `o` through `a` (`a`, `q` ≠ `o`). Exact.
-pub(crate) fn on_ray(o: Point, a: Point, q: Point) -> bool {
-    orient2d(o, a, q) == Orientation::Collinear && same_ray(o, a, q)
-}
-
-/// For points known to be collinear with `o`: whether `a` and `q` lie on the same ray from
-/// `o` (exact: coordinate comparisons only).
-pub(crate) fn same_ray(o: Point, a: Point, q: Point) -> bool {
-    let sx = |p: Point| p.x.partial_cmp(&o.x);
-    let sy = |p: Point| p.y.partial_cmp(&o.y);
-    sx(a) == sx(q) && sy(a) == sy(q) && (a != o) && (q != o)
 }
 
 #[cfg(test)]

@@ -11,9 +11,9 @@
 //!
 //! The same scans find the crossing edges of lenient input ([`mark_crossed`]).
 
-use crate::grid::{scale, shape};
-use crate::pool::{NodeId, Pool};
-use crate::predicates::{orient2d, within_box, Orientation, Point};
+use crate::geom::{orient2d, segments_meet, Orientation};
+use crate::structures::{scale, shape};
+use crate::structures::{NodeId, Pool};
 
 /// Box comparisons allowed per edge (plus a constant) before the proof gives up.
 const BUDGET_PER_EDGE: usize = 16;
@@ -142,7 +142,7 @@ fn crossings(
             return false;
         }
         let (a, b, c, d) = (pool.p(e.from), pool.p(e.to), pool.p(f.from), pool.p(f.to));
-        if crate::clip::crosses(a, b, c, d) {
+        if crate::geom::crosses(a, b, c, d) {
             out.push(e.from);
             out.push(f.from);
             return first_only;
@@ -538,8 +538,8 @@ fn overlapping_pairs<B: Bounds>(
     let (nx, ny) = shape((items.len() / 2).max(1), w, h);
     let (sx, sy) = (scale(nx, w), scale(ny, h));
     // `as` saturates: NaN and negative become 0
-    let column = |x: f64| crate::grid::slot((x - x0) * sx, nx - 1);
-    let row = |y: f64| crate::grid::slot((y - y0) * sy, ny - 1);
+    let column = |x: f64| crate::structures::slot((x - x0) * sx, nx - 1);
+    let row = |y: f64| crate::structures::slot((y - y0) * sy, ny - 1);
     let cells_of = |b: &B| {
         let (l, r, d, u) = b.bounds();
         (column(l), column(r), row(d), row(u))
@@ -626,23 +626,6 @@ fn meet(pool: &Pool, e: &EdgeBox, f: &EdgeBox, turns_proper: bool) -> bool {
         return orient2d(c, d, b) == Orientation::Collinear;
     }
     segments_meet(a, b, c, d)
-}
-
-/// Whether closed segments a–b and c–d have a point in common (exact).
-fn segments_meet(a: Point, b: Point, c: Point, d: Point) -> bool {
-    use Orientation::Collinear;
-    let (o1, o2) = (orient2d(a, b, c), orient2d(a, b, d));
-    let (o3, o4) = (orient2d(c, d, a), orient2d(c, d, b));
-    if o1 != Collinear && o1 == o2 || o3 != Collinear && o3 == o4 {
-        return false; // one segment lies strictly on one side of the other's line
-    }
-    if o1 != Collinear && o2 != Collinear && o3 != Collinear && o4 != Collinear {
-        return true; // a proper crossing
-    }
-    (o1 == Collinear && within_box(a, b, c))
-        || (o2 == Collinear && within_box(a, b, d))
-        || (o3 == Collinear && within_box(c, d, a))
-        || (o4 == Collinear && within_box(c, d, b))
 }
 
 #[cfg(test)]
@@ -735,7 +718,7 @@ mod tests {
             let (a, b) = (pool.p(e), pool.p(pool.next(e)));
             let crossed = edges.iter().any(|&f| {
                 let (c, d) = (pool.p(f), pool.p(pool.next(f)));
-                crate::clip::crosses(a, b, c, d)
+                crate::geom::crosses(a, b, c, d)
             });
             let flagged = pool.get(e).crossed;
             assert!(crossed || !flagged, "edge {e:?} flagged without a crossing");

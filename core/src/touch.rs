@@ -16,13 +16,11 @@
 //! read at its rightmost-lowest position: a hole's boundary turns clockwise there at one
 //! of its visits, an outer boundary never does.
 
-use crate::nest::same_ray;
-use crate::pool::NodeId;
+use crate::geom::same_ray;
+use crate::structures::NodeId;
 use core::cmp::Ordering;
 
-use crate::predicates::{
-    approx_cross, cmp_around, cmp_xy, on_segment, orient2d, Orientation, Point,
-};
+use crate::geom::{approx_cross, cmp_around, cmp_xy, on_segment, orient2d, Orientation, Point};
 use crate::triangulator::{Context, Ring};
 use crate::Error;
 

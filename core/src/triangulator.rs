@@ -3,9 +3,9 @@
 
 use core::marker::PhantomData;
 
-use crate::grid::EdgeGrid;
-use crate::pool::{NodeId, Pool};
 use crate::report::{Dropped, Repair, RepairKind, Report};
+use crate::structures::EdgeGrid;
+use crate::structures::{NodeId, Pool};
 use crate::validate::SweepScratch;
 use crate::{bridge, clean, clip, load, nest, touch, validate, Error, Options};
 
@@ -86,7 +86,7 @@ pub(crate) struct Context {
     /// Scratch of `nest`: per ring, its place among the rings through the position being
     /// decided, or `u32::MAX`; and those rings' edges through it (place, turned ends).
     pub ring_slot: Vec<u32>,
-    pub hub_edges: Vec<(u32, crate::predicates::Point, crate::predicates::Point)>,
+    pub hub_edges: Vec<(u32, crate::geom::Point, crate::geom::Point)>,
     /// Scratch of `nest`'s winding numbers: edges met along the ray in along lists.
     pub along_seen: Vec<NodeId>,
     /// Scratch of `nest`: (b, q) where ring b lies on ring q's boundary, inside it.
@@ -98,7 +98,7 @@ pub(crate) struct Context {
     /// Set for the rest of the call.
     pub keep_collinear: bool,
     /// Scratch of `nest`: edges that cleaning dropped, with their rings.
-    pub dropped_edges: Vec<(u32, crate::predicates::Point, crate::predicates::Point)>,
+    pub dropped_edges: Vec<(u32, crate::geom::Point, crate::geom::Point)>,
     /// Scratch: edges by start node (lenient crossing flags).
     pub edges: Vec<NodeId>,
     pub touches: Vec<validate::Touch>,
@@ -106,19 +106,19 @@ pub(crate) struct Context {
     pub shared: Vec<NodeId>,
     /// Scratch of `touch`: the new successor of each node of one shared position.
     pub relink: Vec<(NodeId, NodeId)>,
-    pub touch_ends: Vec<(crate::predicates::Point, NodeId, bool)>,
+    pub touch_ends: Vec<(crate::geom::Point, NodeId, bool)>,
     /// Scratch of `touch` at a position many nodes share: the edges leaving it (far end,
     /// place among the nodes there, far node) by direction, and their far ends by position.
-    pub touch_leaving: Vec<(crate::predicates::Point, u32, NodeId)>,
-    pub touch_far: Vec<crate::predicates::Point>,
+    pub touch_leaving: Vec<(crate::geom::Point, u32, NodeId)>,
+    pub touch_far: Vec<crate::geom::Point>,
     /// Scratch: one ring's edges with the segments walked both ways cancelled (see
     /// `clean::net_boundary_counter_clockwise`).
-    pub net_edges: Vec<(crate::predicates::Point, crate::predicates::Point, i64)>,
+    pub net_edges: Vec<(crate::geom::Point, crate::geom::Point, i64)>,
     /// Scratch: pairs of rings one ring was cut into (see `touch::refuse_rings_winding_twice`).
     pub lobe_pairs: Vec<(u32, u32, NodeId)>,
     /// Scratch: the rings through one position, with their input ring and depth.
     pub lobe_meet: Vec<(u32, u32, u32, NodeId)>,
-    pub touch_nets: Vec<(crate::predicates::Point, i32)>,
+    pub touch_nets: Vec<(crate::geom::Point, i32)>,
     pub crossings: Vec<validate::Crossing>,
     pub sweep: SweepScratch,
     pub prune: crate::prune::PruneScratch,
@@ -153,7 +153,7 @@ pub(crate) struct Context {
 /// A copy of the node pool and the ring table, to try again from the same point.
 #[derive(Debug, Default)]
 pub(crate) struct Snapshot {
-    nodes: Vec<crate::pool::Node>,
+    nodes: Vec<crate::structures::Node>,
     rings: Vec<Ring>,
 }
 
@@ -335,11 +335,11 @@ fn deviation<T: Coord>(area: f64, vertices: &[[T; 2]], triangles: &[[u32; 3]]) -
             .copied()
             .map(|v| [v[0].to_f64(), v[1].to_f64()]);
         let [x, y] = v.unwrap_or([0.0, 0.0]);
-        crate::predicates::Point::new(x, y)
+        crate::geom::Point::new(x, y)
     };
     let covered: f64 = triangles
         .iter()
-        .map(|t| crate::predicates::approx_double_area(p(t[0]), p(t[1]), p(t[2])).abs())
+        .map(|t| crate::geom::approx_double_area(p(t[0]), p(t[1]), p(t[2])).abs())
         .sum();
     crate::deviation(area, covered)
 }
@@ -350,7 +350,7 @@ fn signed_area(cx: &Context) -> f64 {
     for ring in cx.rings.iter().filter(|r| r.alive) {
         let mut s = 0.0;
         for n in cx.pool.ring(ring.start) {
-            s += crate::predicates::approx_cross(cx.pool.p(n), cx.pool.p(cx.pool.next(n)));
+            s += crate::geom::approx_cross(cx.pool.p(n), cx.pool.p(cx.pool.next(n)));
         }
         total += if ring.depth % 2 == 0 {
             s.abs()

@@ -23,9 +23,9 @@
 use core::cmp::Ordering;
 
 use crate::blocks::{Blocks, Sequence};
-use crate::grid::EdgeGrid;
-use crate::pool::{NodeId, Pool};
-use crate::predicates::{cmp_xy, on_segment, orient2d, Orientation, Point};
+use crate::geom::{cmp_xy, on_segment, orient2d, Orientation, Point};
+use crate::structures::EdgeGrid;
+use crate::structures::{NodeId, Pool};
 
 /// Node `vertex` lies in the relative interior of the edge `edge → next(edge)`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

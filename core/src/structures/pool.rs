@@ -1,7 +1,7 @@
 //! The node pool: every ring's vertices in one `Vec<Node>`, each ring a circular doubly
 //! linked list by index. No pointers, no `unsafe`; removal only relinks.
 
-use crate::predicates::Point;
+use crate::geom::Point;
 
 /// Index of a node in the pool.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]

@@ -9,8 +9,8 @@
 //!   that an ear test looks only at the vertices near its triangle; for a long thin
 //!   triangle, only in the cells along it.
 
-use crate::pool::NodeId;
-use crate::predicates::Point;
+use crate::geom::Point;
+use crate::structures::NodeId;
 
 /// An edge whose bounding box covers at most this many cells is listed in each of them.
 const MAX_CELLS: usize = 32;
@@ -886,7 +886,7 @@ mod tests {
 
     #[test]
     fn cells_offer_every_node_in_the_triangle() {
-        use crate::predicates::{orient2d, Orientation::*};
+        use crate::geom::{orient2d, Orientation::*};
         let mut random = crate::testing::random(0x9e37_79b9_7f4a_7c15);
         let mut cells = Cells::default();
         for round in 0..200 {

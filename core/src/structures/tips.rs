@@ -7,7 +7,7 @@
 //! Clipping only removes nodes from a ring, so the ring order of the live nodes stays that
 //! of the positions handed out when the walk starts.
 
-use crate::pool::NodeId;
+use crate::structures::NodeId;
 
 /// Levels of the bit set: 64⁶ = 2³⁶ positions, more than there are node ids.
 const LEVELS: usize = 6;

@@ -1,0 +1,11 @@
+//! Layer 1, geometry: the exact predicates and the tests built on them. Every geometric
+//! decision in the crate is made here; nothing else computes a determinant
+//! ([`predicates::orient2d`] is the one orientation).
+
+mod corners;
+mod predicates;
+mod segments;
+
+pub(crate) use corners::{corner_contains, on_ray, same_ray};
+pub(crate) use predicates::*;
+pub(crate) use segments::{compare_hits, crosses, overlaps, segments_meet};

@@ -1,0 +1,100 @@
+//! Exact tests on segments: do two cross, meet, overlap; which of two meets a horizontal
+//! line further left. Built on [`orient2d`](super::orient2d) alone.
+
+use core::cmp::Ordering;
+
+use super::predicates::{orient2d, within_box, Orientation, Point};
+
+/// Whether segments a–b and c–d cross at a point interior to both.
+#[inline]
+pub(crate) fn crosses(a: Point, b: Point, c: Point, d: Point) -> bool {
+    use Orientation::*;
+    if boxes_apart(a, b, c, d) {
+        return false;
+    }
+    let (o1, o2) = (orient2d(a, b, c), orient2d(a, b, d));
+    let (o3, o4) = (orient2d(c, d, a), orient2d(c, d, b));
+    o1 != Collinear && o2 != Collinear && o1 != o2 && o3 != Collinear && o4 != Collinear && o3 != o4
+}
+
+/// Whether the bounding boxes of segments a–b and c–d are disjoint (comparisons only,
+/// exact): then the segments have no point in common, and no predicate is needed.
+#[inline]
+fn boxes_apart(a: Point, b: Point, c: Point, d: Point) -> bool {
+    a.x.max(b.x) < c.x.min(d.x)
+        || c.x.max(d.x) < a.x.min(b.x)
+        || a.y.max(b.y) < c.y.min(d.y)
+        || c.y.max(d.y) < a.y.min(b.y)
+}
+
+/// Whether closed segments a–b and c–d have a point in common.
+#[inline]
+pub(crate) fn segments_meet(a: Point, b: Point, c: Point, d: Point) -> bool {
+    use Orientation::*;
+    if boxes_apart(a, b, c, d) {
+        return false;
+    }
+    let (o1, o2) = (orient2d(a, b, c), orient2d(a, b, d));
+    let (o3, o4) = (orient2d(c, d, a), orient2d(c, d, b));
+    if o1 != o2
+        && o3 != o4
+        && o1 != Collinear
+        && o2 != Collinear
+        && o3 != Collinear
+        && o4 != Collinear
+    {
+        return true;
+    }
+    (o1 == Collinear && within_box(a, b, c))
+        || (o2 == Collinear && within_box(a, b, d))
+        || (o3 == Collinear && within_box(c, d, a))
+        || (o4 == Collinear && within_box(c, d, b))
+        || (o1 != Collinear && o2 != Collinear && o1 != o2 && o3 != o4)
+}
+
+/// For segments sharing an endpoint: whether they run along each other for a while.
+#[inline]
+pub(crate) fn overlaps(a: Point, b: Point, c: Point, d: Point) -> bool {
+    orient2d(a, b, c) == Orientation::Collinear
+        && orient2d(a, b, d) == Orientation::Collinear
+        && ((c != a && c != b && within_box(a, b, c))
+            || (d != a && d != b && within_box(a, b, d))
+            || (a != c && a != d && within_box(c, d, a))
+            || (b != c && b != d && within_box(c, d, b)))
+}
+
+/// Compares where two upward edges a → b and c → d, both spanning height `y`, meet the
+/// line at `y`: `Less` when c → d meets it further left (nearer), exactly.
+///
+/// A point left of an upward line has a smaller x at the same height. If c and d lie on
+/// one side of the line through a, b, so does the hit of c → d; otherwise, for
+/// non-crossing edges, a and b lie on one side of the line through c, d.
+pub(crate) fn compare_hits(y: f64, a: Point, b: Point, c: Point, d: Point) -> Ordering {
+    if let Some(ord) = side_of_line(y, a, b, c, d) {
+        return ord;
+    }
+    if let Some(ord) = side_of_line(y, c, d, a, b) {
+        return ord.reverse();
+    }
+    // the edges cross (lenient input only): no exact answer exists, estimate
+    let hit = |p: Point, q: Point| p.x + (y - p.y) / (q.y - p.y) * (q.x - p.x);
+    hit(c, d).total_cmp(&hit(a, b))
+}
+
+/// Where c → d meets height `y` relative to the line a → b there, when c and d are on one
+/// side of that line (or on it): `Less` left, `Greater` right, `Equal` on it.
+fn side_of_line(y: f64, a: Point, b: Point, c: Point, d: Point) -> Option<Ordering> {
+    let (oc, od) = (orient2d(a, b, c), orient2d(a, b, d));
+    use Orientation::*;
+    let ord = match (oc, od) {
+        (Collinear, Collinear) => return Some(Ordering::Equal),
+        (CounterClockwise, Clockwise) | (Clockwise, CounterClockwise) => return None,
+        (CounterClockwise, _) | (_, CounterClockwise) => Ordering::Less,
+        _ => Ordering::Greater,
+    };
+    // one endpoint on the line exactly at height y: that endpoint is the hit of both
+    if (oc == Collinear && c.y == y) || (od == Collinear && d.y == y) {
+        return Some(Ordering::Equal);
+    }
+    Some(ord)
+}

@@ -3,7 +3,7 @@
 //! 1. Drop repeated vertices, collinear vertices and zero-width spikes from each ring
 //!    (earcut's `filterPoints`); a ring left with fewer than three vertices encloses no area
 //!    and is dropped.
-//! 2. Sweep all edges (`validate`): crossing edges are refused in strict mode (lenient
+//! 2. Sweep all edges (`crossings::sweep`): crossing edges are refused in strict mode (lenient
 //!    mode may uncross bow ties, see [`Triangulator`](crate::Triangulator)); vertices
 //!    lying inside another edge ("T-junctions", e.g. a hole touching the outer ring in the
 //!    middle of an edge) are found in both modes.
@@ -14,12 +14,12 @@
 //! 5. Find each ring's rightmost vertex (ties: lowest y), its winding from the turn there,
 //!    and make every ring counter-clockwise. No winding order is assumed from the caller.
 
+use crate::crossings::proof;
+use crate::crossings::sweep::{self, Crossing};
 use crate::geom::{cmp_xy, on_segment, orient2d, within_box, Orientation, Point};
-use crate::prune;
 use crate::report::{DropReason, Dropped, RepairKind};
 use crate::structures::NodeId;
 use crate::triangulator::Context;
-use crate::validate::{self, Crossing};
 use crate::Error;
 
 /// Runs the clean stage over every loaded ring. With `untwist` (lenient mode, the second
@@ -171,11 +171,11 @@ fn refuse_hidden_crossing(cx: &mut Context, dropped_before: usize) -> Result<(),
     // (load makes no ring of zero nodes)
     cx.starts.extend(cx.rings.iter().map(|r| r.start));
     let mut flagged = core::mem::take(&mut cx.edges);
-    if !prune::crossing_pair(&cx.pool, &cx.starts, &mut cx.prune, &mut flagged) {
+    if !proof::crossing_pair(&cx.pool, &cx.starts, &mut cx.prune, &mut flagged) {
         // too many long edges over each other for the pairwise scan: the grid finds them
         crate::nest::index_all_edges(cx);
         cx.grid_current = false;
-        validate::crossing_pairs(&cx.pool, &cx.edge_grid, &cx.starts, &mut flagged);
+        sweep::crossing_pairs(&cx.pool, &cx.edge_grid, &cx.starts, &mut flagged);
     }
     let first = flagged.first().copied().zip(flagged.get(1).copied());
     cx.edges = flagged;
@@ -267,7 +267,7 @@ fn crossing_at_dropped_vertex(cx: &Context) -> bool {
 
 /// Sweeps every live edge: crossings are errors in strict mode, repairs in lenient mode.
 /// With `prune`, first tries to prove that no two edges meet, which gives the same result
-/// faster; `Some(true)` says that no turn is collinear (see [`prune::edges_apart`]).
+/// faster; `Some(true)` says that no turn is collinear (see [`proof::edges_apart`]).
 /// Returns whether that proof succeeded: then no two nodes share a position either. With
 /// `may_retry`, `None` when two edges cross at a vertex the filter dropped (see
 /// [`crossing_at_dropped_vertex`]) and straight vertices were not kept yet.
@@ -282,11 +282,11 @@ fn sweep(cx: &mut Context, prune: Option<bool>, may_retry: bool) -> Result<Optio
     // of `sweep.order` only matters for grouping equal positions).
     if let Some(turns_proper) = prune {
         let order = &mut cx.sweep.order;
-        if prune::edges_apart(&cx.pool, &cx.starts, &mut cx.prune, order, turns_proper) {
+        if proof::edges_apart(&cx.pool, &cx.starts, &mut cx.prune, order, turns_proper) {
             return Ok(Some(true));
         }
     }
-    validate::sweep(
+    sweep::sweep(
         &cx.pool,
         &cx.starts,
         &mut cx.sweep,

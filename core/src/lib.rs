@@ -30,24 +30,22 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-mod blocks;
 mod bridge;
 mod clean;
 mod clip;
+mod crossings;
 mod error;
 mod geom;
 mod load;
 mod lobes;
 mod nest;
 mod options;
-mod prune;
 mod report;
 mod structures;
 #[cfg(test)]
 mod testing;
 mod touch;
 mod triangulator;
-mod validate;
 
 pub use error::Error;
 pub use options::{Nesting, Options, Strategy};

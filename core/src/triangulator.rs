@@ -3,11 +3,11 @@
 
 use core::marker::PhantomData;
 
+use crate::crossings::sweep::SweepScratch;
 use crate::report::{Dropped, Repair, RepairKind, Report};
 use crate::structures::EdgeGrid;
 use crate::structures::{NodeId, Pool};
-use crate::validate::SweepScratch;
-use crate::{bridge, clean, clip, load, nest, touch, validate, Error, Options};
+use crate::{bridge, clean, clip, load, nest, touch, Error, Options};
 
 /// A coordinate type the triangulator accepts: `f32` or `f64`.
 ///
@@ -101,7 +101,7 @@ pub(crate) struct Context {
     pub dropped_edges: Vec<(u32, crate::geom::Point, crate::geom::Point)>,
     /// Scratch: edges by start node (lenient crossing flags).
     pub edges: Vec<NodeId>,
-    pub touches: Vec<validate::Touch>,
+    pub touches: Vec<crate::crossings::sweep::Touch>,
     /// Nodes at positions held by several nodes, sorted by position (see `touch`).
     pub shared: Vec<NodeId>,
     /// Scratch of `touch`: the new successor of each node of one shared position.
@@ -119,9 +119,9 @@ pub(crate) struct Context {
     /// Scratch: the rings through one position, with their input ring and depth.
     pub lobe_meet: Vec<(u32, u32, u32, NodeId)>,
     pub touch_nets: Vec<(crate::geom::Point, i32)>,
-    pub crossings: Vec<validate::Crossing>,
+    pub crossings: Vec<crate::crossings::sweep::Crossing>,
     pub sweep: SweepScratch,
-    pub prune: crate::prune::PruneScratch,
+    pub prune: crate::crossings::proof::ProofScratch,
     pub edge_grid: EdgeGrid,
     /// Lenient mode with crossings: the input's area (outer rings minus holes, by the
     /// shoelace formula as earcut measures it) and snapshots for a second clipping try.
@@ -135,7 +135,7 @@ pub(crate) struct Context {
     pub before_bridge: Snapshot,
     pub before_bridge_dropped: Vec<Dropped>,
     pub before_bridge_repairs: Vec<Repair>,
-    pub before_bridge_crossings: Vec<validate::Crossing>,
+    pub before_bridge_crossings: Vec<crate::crossings::sweep::Crossing>,
     pub before_bridge_holes: usize,
     pub first_dropped: Vec<Dropped>,
     pub first_repairs: Vec<Repair>,
@@ -267,9 +267,14 @@ fn prepare<T: Coord>(
         // comparing the edges whose boxes overlap usually suffices; where that gives up
         // (many long edges over each other), the grid of the edges as they are now (bridge
         // builds its own afterwards) finds the rest
-        if !crate::prune::mark_crossed(&mut cx.pool, &cx.starts, &mut cx.prune) {
+        if !crate::crossings::proof::mark_crossed(&mut cx.pool, &cx.starts, &mut cx.prune) {
             nest::index_all_edges(cx);
-            validate::mark_crossed(&mut cx.pool, &cx.edge_grid, &cx.starts, &mut cx.edges);
+            crate::crossings::sweep::mark_crossed(
+                &mut cx.pool,
+                &cx.edge_grid,
+                &cx.starts,
+                &mut cx.edges,
+            );
         }
     }
     // only a bridge can leave the polygon, which is what a careful run may follow

@@ -1,5 +1,5 @@
 //! A quick proof for the common case of `clean`'s input check: no two edges meet, except
-//! adjacent edges at their shared vertex. Then the sweep of `validate` would find no
+//! adjacent edges at their shared vertex. Then the sweep of `super::sweep` would find no
 //! crossing and no T-junction, and no two nodes share a position, so `clean` skips it.
 //!
 //! A few edges are sorted by the left sides of their bounding boxes, each compared with the
@@ -35,7 +35,7 @@ struct EdgeBox {
 
 /// Reusable buffers of [`edges_apart`].
 #[derive(Debug, Default)]
-pub(crate) struct PruneScratch {
+pub(crate) struct ProofScratch {
     boxes: Vec<EdgeBox>,
     /// Grid scan: where each cell's entries start, and the entries (edge indices).
     start: Vec<u32>,
@@ -87,7 +87,7 @@ const SMALL: usize = 512;
 pub(crate) fn edges_apart(
     pool: &Pool,
     starts: &[NodeId],
-    scratch: &mut PruneScratch,
+    scratch: &mut ProofScratch,
     nodes: &mut Vec<NodeId>,
     turns_proper: bool,
 ) -> bool {
@@ -98,10 +98,10 @@ pub(crate) fn edges_apart(
 }
 
 /// Lenient mode: flags every edge (by its start node) of the rings through `starts` that
-/// properly crosses another, exactly as `validate::mark_crossed` does, but comparing only
+/// properly crosses another, exactly as `super::sweep::mark_crossed` does, but comparing only
 /// edges whose boxes overlap. Returns false, with some of the flags set, when the budget ran
 /// out first; the caller must then finish the job another way.
-pub(crate) fn mark_crossed(pool: &mut Pool, starts: &[NodeId], scratch: &mut PruneScratch) -> bool {
+pub(crate) fn mark_crossed(pool: &mut Pool, starts: &[NodeId], scratch: &mut ProofScratch) -> bool {
     let mut flagged = core::mem::take(&mut scratch.flagged);
     let done = crossings(pool, starts, scratch, &mut flagged, false);
     for &n in &flagged {
@@ -118,7 +118,7 @@ pub(crate) fn mark_crossed(pool: &mut Pool, starts: &[NodeId], scratch: &mut Pru
 pub(crate) fn crossing_pair(
     pool: &Pool,
     starts: &[NodeId],
-    scratch: &mut PruneScratch,
+    scratch: &mut ProofScratch,
     pair: &mut Vec<NodeId>,
 ) -> bool {
     crossings(pool, starts, scratch, pair, true)
@@ -129,7 +129,7 @@ pub(crate) fn crossing_pair(
 fn crossings(
     pool: &Pool,
     starts: &[NodeId],
-    scratch: &mut PruneScratch,
+    scratch: &mut ProofScratch,
     out: &mut Vec<NodeId>,
     first_only: bool,
 ) -> bool {
@@ -211,7 +211,7 @@ enum Scan {
 /// hold the rings' edges in ring order, as [`collect_boxes`] leaves them.
 fn scan(
     pool: &Pool,
-    scratch: &mut PruneScratch,
+    scratch: &mut ProofScratch,
     per_edge: usize,
     visit: impl FnMut(&EdgeBox, &EdgeBox) -> bool,
 ) -> Scan {
@@ -289,11 +289,11 @@ fn collect_chains(pool: &Pool, boxes: &[EdgeBox], chains: &mut Vec<Chain>) -> bo
 /// another, so the edges of one chain meeting an edge of the other form a window that only
 /// moves right).
 fn scan_chains(
-    scratch: &mut PruneScratch,
+    scratch: &mut ProofScratch,
     mut budget: usize,
     mut visit: impl FnMut(&EdgeBox, &EdgeBox) -> bool,
 ) -> Scan {
-    let PruneScratch {
+    let ProofScratch {
         boxes,
         chains,
         start,
@@ -476,11 +476,11 @@ fn scan_sorted(
 /// Many edges: compare the pairs whose boxes overlap, found with a grid (see
 /// [`overlapping_pairs`]).
 fn scan_grid(
-    scratch: &mut PruneScratch,
+    scratch: &mut ProofScratch,
     mut budget: usize,
     mut visit: impl FnMut(&EdgeBox, &EdgeBox) -> bool,
 ) -> Scan {
-    let PruneScratch {
+    let ProofScratch {
         boxes,
         start,
         entries,
@@ -663,7 +663,7 @@ mod tests {
         let (pool, starts) = build(rings);
         let mut nodes = Vec::new();
         let mut run = |turns_proper| {
-            let scratch = &mut PruneScratch::default();
+            let scratch = &mut ProofScratch::default();
             edges_apart(&pool, &starts, scratch, &mut nodes, turns_proper)
         };
         let ok = run(false);
@@ -712,7 +712,7 @@ mod tests {
     /// same flags when it finished, a subset when it gave up. Returns whether it finished.
     fn marks_like_brute_force(rings: &[&[(f64, f64)]]) -> bool {
         let (mut pool, starts) = build(rings);
-        let done = mark_crossed(&mut pool, &starts, &mut PruneScratch::default());
+        let done = mark_crossed(&mut pool, &starts, &mut ProofScratch::default());
         let edges: Vec<NodeId> = (0..pool.len() as u32).map(NodeId).collect();
         for &e in &edges {
             let (a, b) = (pool.p(e), pool.p(pool.next(e)));
@@ -823,7 +823,7 @@ mod tests {
     fn overlapping_pairs(rings: &[Vec<(f64, f64)>]) -> (Vec<Pair>, Vec<Pair>, bool) {
         let refs: Vec<&[(f64, f64)]> = rings.iter().map(Vec::as_slice).collect();
         let (pool, starts) = build(&refs);
-        let mut scratch = PruneScratch::default();
+        let mut scratch = ProofScratch::default();
         collect_boxes(&pool, &starts, &mut scratch.boxes, None);
         let boxes = scratch.boxes.clone();
         let chained = boxes.len() > SMALL && collect_chains(&pool, &boxes, &mut scratch.chains);

@@ -22,7 +22,7 @@
 
 use core::cmp::Ordering;
 
-use crate::blocks::{Blocks, Sequence};
+use crate::crossings::status::{Blocks, Sequence};
 use crate::geom::{cmp_xy, on_segment, orient2d, Orientation, Point};
 use crate::structures::EdgeGrid;
 use crate::structures::{NodeId, Pool};
@@ -288,7 +288,7 @@ fn dedup_crossings(crossings: &mut Vec<Crossing>, from: usize) {
 const CHUNK_AT: usize = if cfg!(test) {
     3
 } else {
-    4 * crate::blocks::BLOCK
+    4 * crate::crossings::status::BLOCK
 };
 
 /// The status, in one of its two forms.

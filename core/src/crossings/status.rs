@@ -1,4 +1,4 @@
-//! A sequence edited by replacing runs: the sweep's status (see `validate`).
+//! A sequence edited by replacing runs: the sweep's status (see `super::sweep`).
 //!
 //! Small, the status is one flat `Vec`, edited by shifting its tail, which is fastest for a
 //! few dozen items. Grown large, it becomes [`Blocks`]: a list of blocks of at most [`BLOCK`]

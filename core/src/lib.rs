@@ -30,24 +30,20 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-mod bridge;
-mod clean;
-mod clip;
+mod context;
 mod crossings;
 mod error;
 mod geom;
-mod load;
-mod lobes;
-mod nest;
 mod options;
 mod report;
+mod stages;
 mod structures;
 #[cfg(test)]
 mod testing;
-mod touch;
 mod triangulator;
 
 pub use error::Error;
+pub use geom::Coord;
 pub use options::{Nesting, Options, Strategy};
 pub use report::{deviation, DropReason, Dropped, Repair, RepairKind, Report};
-pub use triangulator::{Coord, Triangulator};
+pub use triangulator::Triangulator;

@@ -10,3 +10,25 @@ pub(crate) fn random(seed: u64) -> impl FnMut(u64) -> u64 {
         state % n
     }
 }
+
+use crate::context::Context;
+use crate::triangulator::pipeline::{self, Stages};
+
+/// Runs `load` and `clean` (and `lobes` when lenient) on `vertices` and `ring_starts`:
+/// the context a stage after them starts from, and the stages' scratch.
+pub(crate) fn cleaned(vertices: &[[f64; 2]], starts: &[usize], lenient: bool) -> (Context, Stages) {
+    let mut cx = Context::default();
+    cx.reset(lenient);
+    let mut st = Stages::default();
+    let ok = pipeline::load_and_clean(&mut cx, &mut st, vertices, starts, false);
+    assert!(matches!(ok, Ok(true)), "load and clean: {ok:?}");
+    (cx, st)
+}
+
+/// As [`cleaned`], then `nest` by containment (`Nesting::Auto`).
+pub(crate) fn nested(vertices: &[[f64; 2]], starts: &[usize], lenient: bool) -> (Context, Stages) {
+    let (mut cx, mut st) = cleaned(vertices, starts, lenient);
+    let ok = crate::stages::nest::nest(&mut cx, &mut st.nest, crate::Nesting::Auto);
+    assert!(ok.is_ok(), "nest: {ok:?}");
+    (cx, st)
+}

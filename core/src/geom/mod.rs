@@ -2,10 +2,12 @@
 //! decision in the crate is made here; nothing else computes a determinant
 //! ([`predicates::orient2d`] is the one orientation).
 
+mod coord;
 mod corners;
 mod predicates;
 mod segments;
 
+pub use coord::Coord;
 pub(crate) use corners::{corner_contains, on_ray, same_ray};
 pub(crate) use predicates::*;
 pub(crate) use segments::{compare_hits, crosses, overlaps, segments_meet};

@@ -25,6 +25,7 @@
 //! A ring with no ear left is not a valid polygon (or this is a bug): strict mode reports an
 //! internal error, lenient mode cuts a best-effort triangle and says so.
 
+use crate::context::Context;
 use crate::geom::corner_contains;
 use crate::geom::{
     approx_angle_rank, crosses, left_of, orient2d, overlaps, segments_meet, Orientation, Point,
@@ -33,7 +34,6 @@ use crate::report::RepairKind;
 use crate::structures::Cells;
 use crate::structures::NodeId;
 use crate::structures::Tips;
-use crate::triangulator::Context;
 use crate::{Error, Strategy};
 
 /// The fuzzing issue's experiment, never enabled otherwise: with the `planted-bug` feature
@@ -47,7 +47,7 @@ const PLANTED_BUG: bool = cfg!(feature = "planted-bug");
 const GRID_MIN_REFLEX: usize = 32;
 
 /// The fast walk steps over marked tips one by one until it has taken this many steps per
-/// node of the ring (plus `WALK_STEPS_MIN`); then it keeps the tips in `ClipScratch::tips`
+/// node of the ring (plus `WALK_STEPS_MIN`); then it keeps the tips in `Scratch::tips`
 /// and jumps over marked ones, to the same tip. Most rings never get there, and the
 /// bookkeeping would cost them more than it saves; a ring whose ears all lie behind the
 /// walk (a comb's spine, fanned from a corner: a lap per cut) gets there after a few laps.
@@ -56,7 +56,7 @@ const WALK_STEPS_MIN: usize = 256;
 
 /// Reusable buffers of the clip stage.
 #[derive(Debug, Default)]
-pub(crate) struct ClipScratch {
+pub(crate) struct Scratch {
     /// Reflex (or straight) nodes of the polygon being clipped; entries go stale when a node
     /// turns convex or is cut, and are skipped then.
     reflex: Vec<(NodeId, Point)>,
@@ -220,6 +220,7 @@ impl EarQueue {
 /// One polygon being clipped.
 struct Clipper<'a> {
     cx: &'a mut Context,
+    s: &'a mut Scratch,
     out: &'a mut Vec<[u32; 3]>,
     /// Live nodes left.
     len: usize,
@@ -227,12 +228,12 @@ struct Clipper<'a> {
     reflex_count: usize,
     /// The fan shortcut failed once (a degenerate ring): don't try again.
     no_fan: bool,
-    /// Ear tests ask `cx.clip.cells` for candidates rather than scanning `cx.clip.reflex`.
+    /// Ear tests ask `Scratch::cells` for candidates rather than scanning `Scratch::reflex`.
     indexed: bool,
     /// Lenient mode with crossing edges: ears using a crossed edge wait until nothing else
     /// can be cut, so that overlaps stay where the input crosses itself.
     avoid_crossed: bool,
-    /// The fast walk jumps: `cx.clip.tips` holds the ring, and every tip whose mark is
+    /// The fast walk jumps: `Scratch::tips` holds the ring, and every tip whose mark is
     /// cleared must go in (marked ones drop out when the walk comes across them).
     walking: bool,
 }
@@ -242,7 +243,7 @@ struct Clipper<'a> {
 const SPOILER_AFTER: usize = 16;
 
 /// Edge tests the lenient split search may spend per `clip` call (see
-/// `ClipScratch::split_budget`): a few milliseconds.
+/// `Scratch::split_budget`): a few milliseconds.
 const SPLIT_BUDGET: usize = 1 << 22;
 
 /// Clips every polygon; returns how many there were.
@@ -250,14 +251,15 @@ const SPLIT_BUDGET: usize = 1 << 22;
 /// cut (lenient mode only).
 pub(crate) fn clip(
     cx: &mut Context,
+    s: &mut Scratch,
     strategy: Strategy,
     avoid_crossed: bool,
     out: &mut Vec<[u32; 3]>,
 ) -> Result<usize, Error> {
     let mut polygons = 0;
-    cx.clip.split_budget = SPLIT_BUDGET;
+    s.split_budget = SPLIT_BUDGET;
     if strategy == Strategy::Fast && cx.pool.len() >= LAY_OUT_MIN {
-        lay_out(cx);
+        lay_out(cx, s);
     }
     for r in 0..cx.rings.len() {
         let ring = cx.rings[r];
@@ -265,10 +267,10 @@ pub(crate) fn clip(
             continue;
         }
         polygons += 1;
-        cx.clip.pending.clear();
-        cx.clip.pending.push(ring.start);
-        while let Some(start) = cx.clip.pending.pop() {
-            let (mut clipper, start) = Clipper::new(cx, out, start, avoid_crossed);
+        s.pending.clear();
+        s.pending.push(ring.start);
+        while let Some(start) = s.pending.pop() {
+            let (mut clipper, start) = Clipper::new(cx, s, out, start, avoid_crossed);
             match strategy {
                 Strategy::Fast => clipper.fast(start)?,
                 Strategy::Quality => clipper.quality(start)?,
@@ -286,8 +288,7 @@ const LAY_OUT_MIN: usize = 1 << 14;
 
 /// Renumbers the nodes so that each polygon's ring runs through consecutive ids (see
 /// [`crate::structures::Pool::lay_out`]), and the ring table with them.
-fn lay_out(cx: &mut Context) {
-    let clip = &mut cx.clip;
+fn lay_out(cx: &mut Context, clip: &mut Scratch) {
     clip.starts.clear();
     clip.starts.extend(
         (cx.rings.iter().enumerate())
@@ -311,12 +312,13 @@ impl<'a> Clipper<'a> {
     /// reflex nodes. Returns the clipper and a live node to start from.
     fn new(
         cx: &'a mut Context,
+        s: &'a mut Scratch,
         out: &'a mut Vec<[u32; 3]>,
         start: NodeId,
         avoid_crossed: bool,
     ) -> (Self, NodeId) {
         let start = remove_walls(cx, start);
-        cx.clip.reflex.clear();
+        s.reflex.clear();
         let mut len = 0;
         let mut n = start;
         loop {
@@ -325,7 +327,7 @@ impl<'a> Clipper<'a> {
             // a reflex tip is no ear: the walk steps over it at once
             cx.pool.get_mut(n).not_ear = reflex;
             if reflex {
-                cx.clip.reflex.push((n, cx.pool.p(n)));
+                s.reflex.push((n, cx.pool.p(n)));
             }
             len += 1;
             n = cx.pool.next(n);
@@ -333,15 +335,15 @@ impl<'a> Clipper<'a> {
                 break;
             }
         }
-        let reflex_count = cx.clip.reflex.len();
+        let reflex_count = s.reflex.len();
         let indexed = reflex_count >= GRID_MIN_REFLEX;
         if indexed {
-            let (pool, clip) = (&cx.pool, &mut cx.clip);
-            clip.cells.build(&clip.reflex, pool.len());
+            s.cells.build(&s.reflex, cx.pool.len());
         }
         (
             Clipper {
                 cx,
+                s,
                 out,
                 len,
                 reflex_count,
@@ -361,7 +363,7 @@ impl<'a> Clipper<'a> {
         let mut ear = self.live(start);
         let mut stop = ear;
         let mut rescanned = false;
-        // marked tips the walk may step over one by one before it starts `cx.clip.tips`
+        // marked tips the walk may step over one by one before it starts `Scratch::tips`
         let steps_allowed = WALK_STEPS_PER_NODE * self.len + WALK_STEPS_MIN;
         let mut steps = 0;
         while self.len > 3 {
@@ -456,7 +458,7 @@ impl<'a> Clipper<'a> {
             n = self.cx.pool.next(n);
         }
         if self.walking {
-            let (pool, tips) = (&self.cx.pool, &mut self.cx.clip.tips);
+            let (pool, tips) = (&self.cx.pool, &mut self.s.tips);
             tips.fill(|n| !pool.get(n).removed);
         }
     }
@@ -466,7 +468,7 @@ impl<'a> Clipper<'a> {
     #[cold]
     #[inline(never)]
     fn start_walk(&mut self, start: NodeId) {
-        let (pool, tips) = (&self.cx.pool, &mut self.cx.clip.tips);
+        let (pool, tips) = (&self.cx.pool, &mut self.s.tips);
         tips.clear(pool.len());
         let mut n = start;
         for _ in 0..self.len {
@@ -480,11 +482,11 @@ impl<'a> Clipper<'a> {
     /// The walk's next tip after `ear`: the first live node after it not marked "not an
     /// ear", or `stop` (live) if that comes first.
     ///
-    /// `cx.clip.tips` holds every such node, and maybe some that were marked or removed
+    /// `Scratch::tips` holds every such node, and maybe some that were marked or removed
     /// since they went in: those are dropped here, when the walk comes across them.
     #[inline(never)]
     fn step(&mut self, ear: NodeId, stop: NodeId) -> NodeId {
-        let (pool, tips) = (&self.cx.pool, &mut self.cx.clip.tips);
+        let (pool, tips) = (&self.cx.pool, &mut self.s.tips);
         let (Some(e), Some(s)) = (tips.position(ear), tips.position(stop)) else {
             return stop;
         };
@@ -525,16 +527,16 @@ impl<'a> Clipper<'a> {
     /// Mei et al.: always the ear with the smallest angle at its tip.
     fn quality(&mut self, start: NodeId) -> Result<(), Error> {
         let nodes = self.cx.pool.len();
-        self.cx.clip.heap.clear(nodes);
-        if self.cx.clip.queued.len() < nodes {
-            self.cx.clip.queued.resize(nodes, 0);
-            self.cx.clip.spoiler.resize(nodes, NodeId(u32::MAX));
+        self.s.heap.clear(nodes);
+        if self.s.queued.len() < nodes {
+            self.s.queued.resize(nodes, 0);
+            self.s.spoiler.resize(nodes, NodeId(u32::MAX));
         }
         self.seed_heap(start);
         let mut last = start;
         let mut rescanned = false;
         while self.len > 3 {
-            let Some(item) = self.cx.clip.heap.pop() else {
+            let Some(item) = self.s.heap.pop() else {
                 if self.avoid_crossed {
                     // only ears at crossed edges are left: allow them, look again
                     self.avoid_crossed = false;
@@ -559,7 +561,7 @@ impl<'a> Clipper<'a> {
             // (it turned reflex, say) is skipped.
             let n = NodeId(ear_node(item) as u32);
             let node = self.cx.pool.get(n);
-            let current = self.cx.clip.queued.get(n.idx()) == Some(&node.stamp);
+            let current = self.s.queued.get(n.idx()) == Some(&node.stamp);
             if node.removed || !current || !self.is_ear_remembering(n) {
                 continue;
             }
@@ -599,9 +601,9 @@ impl<'a> Clipper<'a> {
         }
         let (a, b, c) = self.corner(n);
         let stamp = self.cx.pool.get(n).stamp;
-        if let Some(queued) = self.cx.clip.queued.get_mut(n.idx()) {
+        if let Some(queued) = self.s.queued.get_mut(n.idx()) {
             *queued = stamp;
-            self.cx.clip.heap.set(ear(approx_angle_rank(a, b, c), n));
+            self.s.heap.set(ear(approx_angle_rank(a, b, c), n));
         }
     }
 
@@ -655,7 +657,7 @@ impl<'a> Clipper<'a> {
         let (a, b, c) = (pool.p(an), pool.p(ear), pool.p(cn));
         let spoils =
             |r: NodeId, q: Point| r != an && r != ear && r != cn && interferes(pool, r, q, a, b, c);
-        let last = self.cx.clip.spoiler.get(ear.idx()).copied();
+        let last = self.s.spoiler.get(ear.idx()).copied();
         if let Some(r) = last.filter(|r| r.idx() < pool.len()) {
             let (node, (lo, hi)) = (pool.get(r), bounds(a, b, c));
             if !node.removed && node.reflex && near(lo, hi, node.p) && spoils(r, node.p) {
@@ -673,7 +675,7 @@ impl<'a> Clipper<'a> {
         });
         // (kept where the search was long: storing costs more than it saves otherwise)
         if looked > SPOILER_AFTER {
-            if let (Some(r), Some(slot)) = (spoiler, self.cx.clip.spoiler.get_mut(ear.idx())) {
+            if let (Some(r), Some(slot)) = (spoiler, self.s.spoiler.get_mut(ear.idx())) {
                 *slot = r;
             }
         }
@@ -697,7 +699,7 @@ impl<'a> Clipper<'a> {
             !node.removed && node.reflex
         };
         if self.indexed {
-            let cells = &self.cx.clip.cells;
+            let cells = &self.s.cells;
             // the grid's own entries are live reflex nodes (it forgets the others), so
             // only nodes added after building need looking up
             cells.any_in_triangle([a, b, c], lo, hi, |r, q| {
@@ -710,7 +712,7 @@ impl<'a> Clipper<'a> {
         } else {
             // positions are listed with the nodes: most fail the box test without a look
             // at the node
-            (self.cx.clip.reflex.iter()).any(|&(r, q)| near(q) && live(r) && test(r, q))
+            (self.s.reflex.iter()).any(|&(r, q)| near(q) && live(r) && test(r, q))
         }
     }
 
@@ -746,11 +748,11 @@ impl<'a> Clipper<'a> {
         }
     }
 
-    /// Without the grid, ear tests scan `cx.clip.reflex`, whose entries go stale as reflex
+    /// Without the grid, ear tests scan `Scratch::reflex`, whose entries go stale as reflex
     /// nodes turn convex: once most are stale, keep only the live ones (in their order, so
     /// every scan finds what it found before). Amortized constant time per cut.
     fn forget_stale_reflex(&mut self) {
-        let reflex = &mut self.cx.clip.reflex;
+        let reflex = &mut self.s.reflex;
         if self.indexed || reflex.len() <= 2 * self.reflex_count + 8 {
             return;
         }
@@ -796,14 +798,14 @@ impl<'a> Clipper<'a> {
         }
     }
 
-    /// `cx.clip.tips` after unlinking `n`, which cleared its neighbours' marks. Out of
+    /// `Scratch::tips` after unlinking `n`, which cleared its neighbours' marks. Out of
     /// line: most rings never start the walk's bookkeeping, and `unlink` is hot.
     #[cold]
     #[inline(never)]
     fn unlink_tip(&mut self, n: NodeId) {
         let pool = &self.cx.pool;
         let (prev, next) = (pool.prev(n), pool.next(n));
-        let tips = &mut self.cx.clip.tips;
+        let tips = &mut self.s.tips;
         tips.insert(prev);
         tips.insert(next);
     }
@@ -866,9 +868,9 @@ impl<'a> Clipper<'a> {
                 // only possible around removed walls: list it again
                 self.reflex_count += 1;
                 let p = self.cx.pool.p(n);
-                self.cx.clip.reflex.push((n, p));
+                self.s.reflex.push((n, p));
                 if self.indexed {
-                    self.cx.clip.cells.add(n);
+                    self.s.cells.add(n);
                 }
             } else {
                 self.reflex_count -= 1;
@@ -880,7 +882,7 @@ impl<'a> Clipper<'a> {
     /// Takes a node that is no longer reflex (or no longer linked) out of the grid.
     fn unindex(&mut self, n: NodeId) {
         if self.indexed {
-            self.cx.clip.cells.remove(n);
+            self.s.cells.remove(n);
         }
     }
 
@@ -889,7 +891,7 @@ impl<'a> Clipper<'a> {
     fn try_fan(&mut self, any: NodeId) -> bool {
         let pool = &self.cx.pool;
         let center = if self.reflex_count == 1 {
-            match self.cx.clip.reflex.iter().map(|&(r, _)| r).find(|&r| {
+            match self.s.reflex.iter().map(|&(r, _)| r).find(|&r| {
                 let node = pool.get(r);
                 !node.removed && node.reflex
             }) {
@@ -1076,15 +1078,15 @@ impl<'a> Clipper<'a> {
             let pool = &self.cx.pool;
             let mut b = pool.next(pool.next(a));
             while b != pool.prev(a) {
-                if self.cx.clip.split_budget < self.len {
+                if self.s.split_budget < self.len {
                     return false;
                 }
-                self.cx.clip.split_budget -= self.len;
+                self.s.split_budget -= self.len;
                 if self.valid_diagonal(a, b) {
                     let c = self.cx.pool.split(a, b);
                     self.note(RepairKind::ForcedEar, a);
-                    self.cx.clip.pending.push(a);
-                    self.cx.clip.pending.push(c);
+                    self.s.pending.push(a);
+                    self.s.pending.push(c);
                     return true;
                 }
                 b = self.cx.pool.next(b);

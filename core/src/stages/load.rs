@@ -1,10 +1,11 @@
 //! Stage 1, *load*: every ring's vertices become nodes of one pool, each ring a circular
 //! doubly linked list. Input is checked here: finite coordinates, sane ring starts.
 
+use crate::context::{Context, Ring};
+use crate::geom::Coord;
 use crate::geom::Point;
 use crate::report::{DropReason, Dropped, RepairKind};
 use crate::structures::NodeId;
-use crate::triangulator::{Context, Coord, Ring};
 use crate::Error;
 
 /// Loads the input into `cx.pool` and `cx.rings`.

@@ -20,32 +20,62 @@ use crate::geom::same_ray;
 use crate::structures::NodeId;
 use core::cmp::Ordering;
 
+use crate::context::{net_boundary_counter_clockwise, Context, NetEdge, Ring};
 use crate::geom::{approx_cross, cmp_around, cmp_xy, on_segment, orient2d, Orientation, Point};
-use crate::triangulator::{Context, Ring};
 use crate::Error;
 
-/// The end of the run of `cx.shared` from `i` on whose nodes share one position.
-pub(crate) fn same_position_end(cx: &Context, i: usize) -> usize {
-    let p = cx.pool.p(cx.shared[i]);
-    let mut j = i + 1;
-    while j < cx.shared.len() && cx.pool.p(cx.shared[j]) == p {
-        j += 1;
-    }
-    j
+/// Two cycles `c` < `d` of one input ring at one depth, meeting at node `at`.
+#[derive(Clone, Copy, Debug)]
+struct LobePair {
+    c: u32,
+    d: u32,
+    at: NodeId,
+}
+
+/// A live ring through one position: its input ring, its depth, its number, and its
+/// node there.
+#[derive(Clone, Copy, Debug)]
+struct LobeAt {
+    input: u32,
+    depth: u32,
+    ring: u32,
+    node: NodeId,
+}
+
+/// Scratch buffers of the touch stage, kept between calls.
+#[derive(Debug, Default)]
+pub(crate) struct Scratch {
+    /// The new successor of each node of one shared position: (node, successor).
+    relink: Vec<(NodeId, NodeId)>,
+    /// The edge ends at one shared position: far end, node there, whether it arrives.
+    ends: Vec<(Point, NodeId, bool)>,
+    /// At a position many nodes share: the edges leaving it (far end, place among the
+    /// nodes there, far node), by direction.
+    leaving: Vec<(Point, u32, NodeId)>,
+    /// Those edges' far ends, by position.
+    far: Vec<Point>,
+    /// Pairs of rings one input ring was cut into, and a node where they meet.
+    lobe_pairs: Vec<LobePair>,
+    /// The rings through one position, with their input ring and depth.
+    lobe_meet: Vec<LobeAt>,
+    /// The rays and their net walks of a crack test.
+    nets: Vec<(Point, i32)>,
+    /// A ring's segments with their net walks (see `net_boundary_counter_clockwise`).
+    net_edges: Vec<NetEdge>,
 }
 
 /// Re-links every shared position and re-traces the rings; returns the number of holes.
-pub(crate) fn join(cx: &mut Context) -> usize {
+pub(crate) fn join(cx: &mut Context, s: &mut Scratch) -> usize {
     if !cx.shared.is_empty() {
         // relinking changes which node an edge starts at
-        cx.grid_current = false;
+        cx.edge_index.invalidate();
         let mut i = 0;
         while i < cx.shared.len() {
-            let j = same_position_end(cx, i);
-            relink(cx, i, j);
+            let j = cx.same_position_end(i);
+            relink(cx, s, i, j);
             i = j;
         }
-        retrace(cx);
+        retrace(cx, s);
     }
     cx.rings
         .iter()
@@ -63,47 +93,56 @@ pub(crate) fn join(cx: &mut Context) -> usize {
 /// into walls, which enclose nothing.) Each pair is decided by crossing parity at a vertex
 /// of one off the other's boundary. The pairs and the scans are bounded by budgets linear
 /// in the nodes; past them the rest goes unchecked.
-pub(crate) fn refuse_rings_winding_twice(cx: &mut Context) -> Result<(), Error> {
+pub(crate) fn refuse_rings_winding_twice(cx: &mut Context, s: &mut Scratch) -> Result<(), Error> {
     if cx.lenient || cx.shared.is_empty() {
         return Ok(());
     }
-    // (ring, ring, a node where they meet), each pair once; at most `limit` of them
-    let mut pairs = core::mem::take(&mut cx.lobe_pairs);
-    let mut meet = core::mem::take(&mut cx.lobe_meet);
+    // each pair of rings once; at most `limit` of them
+    let mut pairs = core::mem::take(&mut s.lobe_pairs);
+    let mut meet = core::mem::take(&mut s.lobe_meet);
     pairs.clear();
     let limit = 4 * cx.pool.len() + 1024;
     let mut i = 0;
     while i < cx.shared.len() && pairs.len() < limit {
-        let j = same_position_end(cx, i);
+        let j = cx.same_position_end(i);
         // the live rings through this position, by (input ring, depth), each once
         meet.clear();
         for &n in &cx.shared[i..j] {
             if live(cx, n) {
                 let ring = cx.pool.get(n).ring;
                 let r = cx.rings[ring as usize];
-                meet.push((r.input, r.depth, ring, n));
+                meet.push(LobeAt {
+                    input: r.input,
+                    depth: r.depth,
+                    ring,
+                    node: n,
+                });
             }
         }
-        meet.sort_unstable_by_key(|&(input, depth, ring, _)| (input, depth, ring));
-        meet.dedup_by_key(|m| m.2);
-        'meet: for (k, &(input, depth, ra, na)) in meet.iter().enumerate() {
+        meet.sort_unstable_by_key(|m| (m.input, m.depth, m.ring));
+        meet.dedup_by_key(|m| m.ring);
+        'meet: for (k, m) in meet.iter().enumerate() {
             let same = meet[k + 1..]
                 .iter()
-                .take_while(|m| m.0 == input && m.1 == depth);
-            for &(_, _, rb, _) in same {
+                .take_while(|o| o.input == m.input && o.depth == m.depth);
+            for o in same {
                 if pairs.len() >= limit {
                     break 'meet;
                 }
-                pairs.push((ra.min(rb), ra.max(rb), na));
+                pairs.push(LobePair {
+                    c: m.ring.min(o.ring),
+                    d: m.ring.max(o.ring),
+                    at: m.node,
+                });
             }
         }
         i = j;
     }
-    pairs.sort_unstable_by_key(|&(c, d, _)| (c, d));
-    pairs.dedup_by_key(|&mut (c, d, _)| (c, d));
+    pairs.sort_unstable_by_key(|p| (p.c, p.d));
+    pairs.dedup_by_key(|p| (p.c, p.d));
     let mut result = Ok(());
     let mut budget = 16 * cx.pool.len() + 4096;
-    'pairs: for &(c, d, at) in &pairs {
+    'pairs: for &LobePair { c, d, at } in &pairs {
         for (inner, outer) in [(c as usize, d as usize), (d as usize, c as usize)] {
             match lies_inside(cx, inner, outer, &mut budget) {
                 Some(true) => {
@@ -118,8 +157,8 @@ pub(crate) fn refuse_rings_winding_twice(cx: &mut Context) -> Result<(), Error> 
             }
         }
     }
-    cx.lobe_pairs = pairs;
-    cx.lobe_meet = meet;
+    s.lobe_pairs = pairs;
+    s.lobe_meet = meet;
     result
 }
 
@@ -167,17 +206,17 @@ fn live(cx: &Context, n: NodeId) -> bool {
 /// Re-links the nodes `cx.shared[i..j]`, all at one position, by the face-walk rule.
 /// Leaves them as they are when the rule does not give a one-to-one pairing (only for
 /// invalid, lenient input).
-fn relink(cx: &mut Context, i: usize, j: usize) {
-    cx.relink.clear();
+fn relink(cx: &mut Context, s: &mut Scratch, i: usize, j: usize) {
+    s.relink.clear();
     let o = cx.pool.p(cx.shared[i]);
-    let doubled = if j - i > FEW_AT_ONE_POSITION && sort_ends(cx, i, j) {
-        relink_sorted(cx, i, j)
+    let doubled = if j - i > FEW_AT_ONE_POSITION && sort_ends(cx, s, i, j) {
+        relink_sorted(cx, s, i, j)
     } else {
-        relink_by_pairs(cx, i, j, o);
+        relink_by_pairs(cx, s, i, j, o);
         any_doubled(cx, i, j)
     };
     // one-to-one? every successor used once
-    let pairs = &mut cx.relink;
+    let pairs = &mut s.relink;
     pairs.sort_unstable_by_key(|&(_, t)| t);
     let conflict = pairs.windows(2).any(|w| w[0].1 == w[1].1);
     // (lenient mode on crossing input keeps the rings as they are there: its repairs
@@ -186,14 +225,14 @@ fn relink(cx: &mut Context, i: usize, j: usize) {
     if exact && (conflict || doubled) {
         // Edges of one direction need ordering: the rule above sends an edge straight
         // back first, which closes a wall, but a crack into the region is walked along.
-        if !relink_bundles(cx, i, j) {
+        if !relink_bundles(cx, s, i, j) {
             return;
         }
     } else if conflict {
         return;
     }
-    for k in 0..cx.relink.len() {
-        let (n, target) = cx.relink[k];
+    for k in 0..s.relink.len() {
+        let (n, target) = s.relink[k];
         cx.pool.get_mut(n).next = target;
         cx.pool.get_mut(target).prev = n;
         cx.pool.touch(n);
@@ -206,7 +245,7 @@ const FEW_AT_ONE_POSITION: usize = 8;
 
 /// The face-walk rule at the position of `cx.shared[i..j]`, edge by edge: each arriving
 /// edge against every leaving one (quadratic in the nodes there, fastest for a few).
-fn relink_by_pairs(cx: &mut Context, i: usize, j: usize, o: Point) {
+fn relink_by_pairs(cx: &mut Context, s: &mut Scratch, i: usize, j: usize, o: Point) {
     for a in i..j {
         let n = cx.shared[a];
         if !live(cx, n) {
@@ -226,19 +265,19 @@ fn relink_by_pairs(cx: &mut Context, i: usize, j: usize, o: Point) {
             };
         }
         if let Some(target) = best {
-            cx.relink.push((n, target));
+            s.relink.push((n, target));
         }
     }
 }
 
-/// Fills `cx.touch_leaving` with the edges leaving the position `o` of `cx.shared[i..j]`,
+/// Fills `s.leaving` with the edges leaving the position `o` of `cx.shared[i..j]`,
 /// counter-clockwise from the +x direction, those of one direction in the order of their
-/// nodes in `cx.shared`, and `cx.touch_far` with their far ends by position. False when
+/// nodes in `cx.shared`, and `s.far` with their far ends by position. False when
 /// an edge there has no length (its far end at `o`: no direction to sort by).
-fn sort_ends(cx: &mut Context, i: usize, j: usize) -> bool {
+fn sort_ends(cx: &mut Context, s: &mut Scratch, i: usize, j: usize) -> bool {
     let o = cx.pool.p(cx.shared[i]);
     let (pool, rings, shared) = (&cx.pool, &cx.rings, &cx.shared);
-    let (leaving, far) = (&mut cx.touch_leaving, &mut cx.touch_far);
+    let (leaving, far) = (&mut s.leaving, &mut s.far);
     leaving.clear();
     far.clear();
     for (place, &m) in shared[i..j].iter().enumerate() {
@@ -264,9 +303,9 @@ fn sort_ends(cx: &mut Context, i: usize, j: usize) -> bool {
 /// first), or else along the one of greatest angle; of several leaving in one direction,
 /// the first in `cx.shared`, as [`relink_by_pairs`] picks. O(k log k) for k nodes there.
 /// Returns whether an edge arrives from where another one leaves to (see [`any_doubled`]).
-fn relink_sorted(cx: &mut Context, i: usize, j: usize) -> bool {
+fn relink_sorted(cx: &mut Context, s: &mut Scratch, i: usize, j: usize) -> bool {
     let o = cx.pool.p(cx.shared[i]);
-    let (leaving, far) = (&cx.touch_leaving, &cx.touch_far);
+    let (leaving, far) = (&s.leaving, &s.far);
     let mut doubled = false;
     for &n in &cx.shared[i..j] {
         if !live(cx, n) {
@@ -281,7 +320,7 @@ fn relink_sorted(cx: &mut Context, i: usize, j: usize) -> bool {
         let group = if up_to == 0 { last } else { leaving[up_to - 1] };
         let first = leaving.partition_point(|e| cmp_around(o, e.0, group.0) == Ordering::Less);
         if let Some(&(_, _, target)) = leaving.get(first) {
-            cx.relink.push((n, target));
+            s.relink.push((n, target));
         }
         doubled |= far.binary_search_by(|&p| cmp_xy(p, back)).is_ok();
     }
@@ -295,11 +334,11 @@ fn relink_sorted(cx: &mut Context, i: usize, j: usize) -> bool {
 /// edges of one direction (a bundle) lie on one another, so their order within the bundle
 /// is free, and the sequence must alternate across bundles. With the sequence fixed, each
 /// arriving edge continues along the leaving edge just clockwise of it, as the rule says.
-/// Fills `cx.relink`; false when the edges around X cannot alternate (invalid input).
-fn relink_bundles(cx: &mut Context, i: usize, j: usize) -> bool {
+/// Fills `s.relink`; false when the edges around X cannot alternate (invalid input).
+fn relink_bundles(cx: &mut Context, s: &mut Scratch, i: usize, j: usize) -> bool {
     let o = cx.pool.p(cx.shared[i]);
     // (far end, node arriving at X or target leaving X, arrives), counter-clockwise
-    let mut ends = core::mem::take(&mut cx.touch_ends);
+    let mut ends = core::mem::take(&mut s.ends);
     ends.clear();
     for &n in &cx.shared[i..j] {
         if live(cx, n) {
@@ -320,12 +359,12 @@ fn relink_bundles(cx: &mut Context, i: usize, j: usize) -> bool {
         all_doubled &= 2 * ins == e - k;
         k = e;
     }
-    let crack = !all_doubled || is_crack(cx, i, j);
+    let crack = !all_doubled || is_crack(cx, s, i, j);
     let paired = [crack, !crack].into_iter().any(|first_arrives| {
-        cx.relink.clear();
-        pair_alternating(o, &ends, first_arrives, &mut cx.relink)
+        s.relink.clear();
+        pair_alternating(o, &ends, first_arrives, &mut s.relink)
     });
-    cx.touch_ends = ends;
+    s.ends = ends;
     paired
 }
 
@@ -461,15 +500,15 @@ fn crack_at(cx: &Context, y_node: NodeId, x: Point, nets: &mut Vec<(Point, i32)>
 /// Whether the doubled edges through the position of `cx.shared[i..j]` are cracks into the
 /// region (its inside on both sides) rather than walls, as read at their far ends; walls
 /// when no far end tells.
-fn is_crack(cx: &mut Context, i: usize, j: usize) -> bool {
+fn is_crack(cx: &mut Context, s: &mut Scratch, i: usize, j: usize) -> bool {
     let x = cx.pool.p(cx.shared[i]);
-    let mut nets = core::mem::take(&mut cx.touch_nets);
+    let mut nets = core::mem::take(&mut s.nets);
     let crack = cx.shared[i..j]
         .iter()
         .filter(|&&n| live(cx, n))
         .find_map(|&n| crack_at(cx, cx.pool.prev(n), x, &mut nets))
         .unwrap_or(false);
-    cx.touch_nets = nets;
+    s.nets = nets;
     crack
 }
 
@@ -499,7 +538,7 @@ fn rank(o: Point, back: Point, q: Point) -> u8 {
 
 /// Traces the rings again after re-linking: each cycle becomes a ring of its own, an outer
 /// boundary (depth 0) or a hole (depth 1). The old ring entries stay, dead, for reporting.
-fn retrace(cx: &mut Context) {
+fn retrace(cx: &mut Context, s: &mut Scratch) {
     let old = cx.rings.len();
     let crossing = cx.lenient && !cx.crossings.is_empty();
     for k in 0..cx.pool.len() {
@@ -542,7 +581,7 @@ fn retrace(cx: &mut Context) {
             // Every visit there is the tip of a wall the ring runs out along and back
             // (joining rings leaves such walls where a hole cancelled a lobe): decide on
             // the ring's net boundary.
-            hole = crate::clean::net_boundary_counter_clockwise(cx, n) == Some(false);
+            hole = net_boundary_counter_clockwise(&cx.pool, n, &mut s.net_edges) == Some(false);
         }
         if cx.lenient && area != 0.0 {
             // With crossing edges the turn at one vertex may not tell the winding of the
@@ -630,28 +669,29 @@ mod tests {
         for case in 0..800 {
             let lenient = case % 2 == 1;
             let (vertices, starts) = petal_rings(&mut next, lenient);
-            let mut cx = Context {
-                lenient,
-                ..Context::default()
-            };
-            crate::load::load(&mut cx, &vertices, &starts).unwrap();
-            if !matches!(crate::clean::clean(&mut cx, false), Ok(true))
-                || crate::nest::nest(&mut cx, crate::Nesting::Auto).is_err()
-            {
+            let mut cx = Context::default();
+            cx.reset(lenient);
+            let mut st = crate::triangulator::pipeline::Stages::default();
+            let nesting = crate::Nesting::Auto;
+            let checked = crate::triangulator::pipeline::check_input(
+                &mut cx, &mut st, &vertices, &starts, nesting, false,
+            );
+            if !matches!(checked, Ok(true)) {
                 continue;
             }
+            let s = &mut st.touch;
             let mut i = 0;
             while i < cx.shared.len() {
-                let j = same_position_end(&cx, i);
+                let j = cx.same_position_end(i);
                 let o = cx.pool.p(cx.shared[i]);
-                cx.relink.clear();
-                relink_by_pairs(&mut cx, i, j, o);
-                let mut by_pairs = cx.relink.clone();
+                s.relink.clear();
+                relink_by_pairs(&mut cx, s, i, j, o);
+                let mut by_pairs = s.relink.clone();
                 let doubled = any_doubled(&cx, i, j);
-                cx.relink.clear();
-                assert!(sort_ends(&mut cx, i, j));
-                assert_eq!(relink_sorted(&mut cx, i, j), doubled, "doubled at {o:?}");
-                let mut sorted = cx.relink.clone();
+                s.relink.clear();
+                assert!(sort_ends(&mut cx, s, i, j));
+                assert_eq!(relink_sorted(&mut cx, s, i, j), doubled, "doubled at {o:?}");
+                let mut sorted = s.relink.clone();
                 by_pairs.sort_unstable();
                 sorted.sort_unstable();
                 assert_eq!(sorted, by_pairs, "at {o:?} in {vertices:?} {starts:?}");

@@ -11,34 +11,59 @@
 //!    lowest input index, so the output mesh is consistent by index.
 //! 4. Split each touched edge at the vertices lying on it: touching happens only at
 //!    vertices from here on.
-//! 5. Find each ring's rightmost vertex (ties: lowest y), its winding from the turn there,
-//!    and make every ring counter-clockwise. No winding order is assumed from the caller.
+//! 5. ([`orient_rings`], after lenient mode's `lobes` split) Find each ring's rightmost
+//!    vertex (ties: lowest y), its winding from the turn there, and make every ring
+//!    counter-clockwise. No winding order is assumed from the caller.
 
+use crate::context::{
+    lowest_net_arrives, net_boundary_counter_clockwise, Context, LoadedRing, NetEdge,
+};
 use crate::crossings::proof;
-use crate::crossings::sweep::{self, Crossing};
+use crate::crossings::proof::ProofScratch;
+use crate::crossings::sweep::{self, Crossing, SweepScratch, Touch};
 use crate::geom::{cmp_xy, on_segment, orient2d, within_box, Orientation, Point};
 use crate::report::{DropReason, Dropped, RepairKind};
 use crate::structures::NodeId;
-use crate::triangulator::Context;
 use crate::Error;
+
+/// Scratch buffers of the clean stage, kept between calls (and between the runs of one
+/// lenient call, which reuse the first run's sweep order).
+#[derive(Debug, Default)]
+pub(crate) struct Scratch {
+    /// A start node of each ring swept.
+    starts: Vec<NodeId>,
+    /// Edges (by start node) found crossing among the rings as loaded.
+    flagged: Vec<NodeId>,
+    /// Vertices the sweep found inside edges.
+    touches: Vec<Touch>,
+    /// The sweep's buffers; its order of the nodes by position is read afterwards.
+    sweep: SweepScratch,
+    /// The quick proof's buffers.
+    proof: ProofScratch,
+    /// A ring's segments with their net walks (see `net_boundary_counter_clockwise`).
+    net_edges: Vec<NetEdge>,
+}
 
 /// Runs the clean stage over every loaded ring. With `untwist` (lenient mode, the second
 /// run over an input whose first run found crossings), bow ties are uncrossed first.
 /// Returns false when untwisting changed nothing: that run would repeat the first exactly,
 /// so the stage stops there.
-pub(crate) fn clean(cx: &mut Context, untwist: bool) -> Result<bool, Error> {
+pub(crate) fn clean(cx: &mut Context, s: &mut Scratch, untwist: bool) -> Result<bool, Error> {
     // every ring as loaded: its first node and node count
-    cx.blocks.clear();
-    let blocks = cx.rings.iter().map(|r| (r.start.0, r.len));
-    cx.blocks.extend(blocks);
+    cx.as_loaded.clear();
+    let as_loaded = (cx.rings.iter()).map(|r| LoadedRing {
+        first: r.start.0,
+        len: r.len,
+    });
+    cx.as_loaded.extend(as_loaded);
     let dropped_before = cx.dropped.len();
     for r in 0..cx.rings.len() {
         filter_ring(cx, r);
     }
     if !cx.lenient && dropped_geometry(cx, dropped_before) {
-        refuse_hidden_crossing(cx, dropped_before)?;
+        refuse_hidden_crossing(cx, s, dropped_before)?;
     }
-    let apart = match sweep_filtered(cx, untwist)? {
+    let apart = match sweep_filtered(cx, s, untwist)? {
         Some(apart) => apart,
         None if untwist => return Ok(false),
         None => {
@@ -47,30 +72,30 @@ pub(crate) fn clean(cx: &mut Context, untwist: bool) -> Result<bool, Error> {
             // (for this run and the following ones of this call), and sweep again.
             cx.keep_collinear = true;
             refilter(cx, dropped_before);
-            sweep_filtered(cx, untwist)?.unwrap_or(false)
+            sweep_filtered(cx, s, untwist)?.unwrap_or(false)
         }
     };
     if apart {
         // no two nodes share a position and no vertex lies on an edge
         cx.shared.clear();
     } else {
-        canonical_vertices(cx);
+        canonical_vertices(cx, s);
         // nodes from here on are the ones edge splits add
         let first_split = cx.pool.len();
-        split_touched_edges(cx);
-        collect_shared(cx, first_split);
-        // (crossing input has no region to keep, and its repairs, untwisting included,
-        // were tuned on whole rings)
-        if cx.lenient && !untwist && cx.crossings.is_empty() {
-            cx.split_lobes = crate::lobes::split(cx);
-        }
-    }
-    for r in 0..cx.rings.len() {
-        if cx.rings[r].alive {
-            orient_ring(cx, r);
-        }
+        split_touched_edges(cx, s);
+        collect_shared(cx, s, first_split);
     }
     Ok(true)
+}
+
+/// Step 5 of the stage, after `lobes` (which splits rings before they are oriented):
+/// finds each live ring's rightmost vertex and winding, and turns it counter-clockwise.
+pub(crate) fn orient_rings(cx: &mut Context, s: &mut Scratch) {
+    for r in 0..cx.rings.len() {
+        if cx.rings[r].alive {
+            orient_ring(cx, s, r);
+        }
+    }
 }
 
 /// Drops repeated, collinear and spike vertices from ring `r`; kills it when fewer than
@@ -132,7 +157,7 @@ fn filter_ring(cx: &mut Context, r: usize) {
 /// Links every ring as loaded again, all its nodes live.
 fn relink_as_loaded(cx: &mut Context) {
     for r in 0..cx.rings.len() {
-        let (first, count) = cx.blocks[r];
+        let LoadedRing { first, len: count } = cx.as_loaded[r];
         for n in &mut cx.pool.nodes[first as usize..(first + count) as usize] {
             n.removed = false;
         }
@@ -165,20 +190,26 @@ fn dropped_geometry(cx: &Context, dropped_before: usize) -> bool {
 /// crosses the input's boundary, although not the filtered rings'. Looks for a proper
 /// crossing among the edges as loaded and refuses the input if there is one; else filters
 /// again (the same drops). Only inputs with such drops pay for it.
-fn refuse_hidden_crossing(cx: &mut Context, dropped_before: usize) -> Result<(), Error> {
+fn refuse_hidden_crossing(
+    cx: &mut Context,
+    s: &mut Scratch,
+    dropped_before: usize,
+) -> Result<(), Error> {
     relink_as_loaded(cx);
-    cx.starts.clear();
+    s.starts.clear();
     // (load makes no ring of zero nodes)
-    cx.starts.extend(cx.rings.iter().map(|r| r.start));
-    let mut flagged = core::mem::take(&mut cx.edges);
-    if !proof::crossing_pair(&cx.pool, &cx.starts, &mut cx.prune, &mut flagged) {
+    s.starts.extend(cx.rings.iter().map(|r| r.start));
+    let mut flagged = core::mem::take(&mut s.flagged);
+    if !proof::crossing_pair(&cx.pool, &s.starts, &mut s.proof, &mut flagged) {
         // too many long edges over each other for the pairwise scan: the grid finds them
-        crate::nest::index_all_edges(cx);
-        cx.grid_current = false;
-        sweep::crossing_pairs(&cx.pool, &cx.edge_grid, &cx.starts, &mut flagged);
+        // (the rings as loaded, not as filtered: the index is stale once they are filtered
+        // again below)
+        cx.edge_index.rebuild(&cx.pool, &cx.rings);
+        cx.edge_index.invalidate();
+        sweep::crossing_pairs(&cx.pool, cx.edge_index.grid(), &s.starts, &mut flagged);
     }
     let first = flagged.first().copied().zip(flagged.get(1).copied());
-    cx.edges = flagged;
+    s.flagged = flagged;
     if let Some((a, b)) = first {
         return Err(edges_cross(cx, a, b));
     }
@@ -210,7 +241,7 @@ fn drop_node(cx: &mut Context, n: NodeId, ring: u32, reason: DropReason) {
 
 /// The sweep after filtering (see [`sweep`]); with `untwist`, bow ties are uncrossed first
 /// (`Ok(None)` when there were none: the caller stops).
-fn sweep_filtered(cx: &mut Context, untwist: bool) -> Result<Option<bool>, Error> {
+fn sweep_filtered(cx: &mut Context, s: &mut Scratch, untwist: bool) -> Result<Option<bool>, Error> {
     if untwist {
         // Loading and filtering are deterministic, so these are the first run's nodes and
         // `cx.crossings` still holds what its sweep found in them: report those crossings
@@ -230,14 +261,14 @@ fn sweep_filtered(cx: &mut Context, untwist: bool) -> Result<Option<bool>, Error
         });
         // (relinking may have left collinear turns)
         if still_crossed {
-            cx.sweep.order_is_sorted = true;
-            sweep(cx, None, false)
+            s.sweep.order_is_sorted = true;
+            sweep(cx, s, None, false)
         } else {
-            sweep(cx, Some(false), false)
+            sweep(cx, s, Some(false), false)
         }
     } else {
         // the filter left no collinear turn, unless told to keep them
-        sweep(cx, Some(!cx.keep_collinear), true)
+        sweep(cx, s, Some(!cx.keep_collinear), true)
     }
 }
 
@@ -249,7 +280,7 @@ fn crossing_at_dropped_vertex(cx: &Context) -> bool {
     let edge = |e: NodeId| (pool.p(e), pool.p(pool.next(e)));
     // the nodes dropped between e and its successor, in input order
     let gap = |e: NodeId| {
-        let (first, count) = cx.blocks[pool.get(e).ring as usize];
+        let LoadedRing { first, len: count } = cx.as_loaded[pool.get(e).ring as usize];
         let (s, t) = (e.0 - first, pool.next(e).0 - first);
         let len = if t > s { t - s - 1 } else { count - s + t - 1 };
         (1..=len).map(move |k| NodeId(first + (s + k) % count))
@@ -271,27 +302,32 @@ fn crossing_at_dropped_vertex(cx: &Context) -> bool {
 /// Returns whether that proof succeeded: then no two nodes share a position either. With
 /// `may_retry`, `None` when two edges cross at a vertex the filter dropped (see
 /// [`crossing_at_dropped_vertex`]) and straight vertices were not kept yet.
-fn sweep(cx: &mut Context, prune: Option<bool>, may_retry: bool) -> Result<Option<bool>, Error> {
-    cx.starts.clear();
-    cx.starts
+fn sweep(
+    cx: &mut Context,
+    s: &mut Scratch,
+    prune: Option<bool>,
+    may_retry: bool,
+) -> Result<Option<bool>, Error> {
+    s.starts.clear();
+    s.starts
         .extend(cx.rings.iter().filter(|r| r.alive).map(|r| r.start));
-    cx.touches.clear();
+    s.touches.clear();
     cx.crossings.clear();
     // Usually no two edges meet at all; proving that is cheaper than the sweep and gives
     // its result: no touches, no crossings, and no shared positions to sort out (the order
     // of `sweep.order` only matters for grouping equal positions).
     if let Some(turns_proper) = prune {
-        let order = &mut cx.sweep.order;
-        if proof::edges_apart(&cx.pool, &cx.starts, &mut cx.prune, order, turns_proper) {
+        let order = &mut s.sweep.order;
+        if proof::edges_apart(&cx.pool, &s.starts, &mut s.proof, order, turns_proper) {
             return Ok(Some(true));
         }
     }
     sweep::sweep(
         &cx.pool,
-        &cx.starts,
-        &mut cx.sweep,
+        &s.starts,
+        &mut s.sweep,
         !cx.lenient,
-        &mut cx.touches,
+        &mut s.touches,
         &mut cx.crossings,
     );
     if let Some(&Crossing { a, b }) = cx.crossings.first() {
@@ -347,8 +383,8 @@ fn untwist_bow_ties(cx: &mut Context) -> bool {
 }
 
 /// Makes all nodes at one position use one vertex index, the lowest; reports the others.
-fn canonical_vertices(cx: &mut Context) {
-    let order = &cx.sweep.order;
+fn canonical_vertices(cx: &mut Context, s: &mut Scratch) {
+    let order = &s.sweep.order;
     let mut i = 0;
     while i < order.len() {
         let p = cx.pool.p(order[i]);
@@ -382,17 +418,17 @@ fn canonical_vertices(cx: &mut Context) {
 
 /// Inserts a node into every edge at each vertex found lying inside it, in order along the
 /// edge, so that rings touch only at shared vertices.
-fn split_touched_edges(cx: &mut Context) {
-    if cx.touches.is_empty() {
+fn split_touched_edges(cx: &mut Context, s: &mut Scratch) {
+    if s.touches.is_empty() {
         return;
     }
     let pool = &cx.pool;
     // group by edge, then order along the edge (the points are collinear with it, so
     // comparing coordinates in the edge's direction orders them exactly)
-    cx.touches.sort_unstable_by(|s, t| {
-        s.edge.cmp(&t.edge).then_with(|| {
-            let (a, b) = (pool.p(s.edge), pool.p(pool.next(s.edge)));
-            let (ps, pt) = (pool.p(s.vertex), pool.p(t.vertex));
+    s.touches.sort_unstable_by(|u, w| {
+        u.edge.cmp(&w.edge).then_with(|| {
+            let (a, b) = (pool.p(u.edge), pool.p(pool.next(u.edge)));
+            let (ps, pt) = (pool.p(u.vertex), pool.p(w.vertex));
             let ord = cmp_xy(ps, pt);
             if cmp_xy(a, b).is_le() {
                 ord
@@ -402,11 +438,11 @@ fn split_touched_edges(cx: &mut Context) {
         })
     });
     let mut k = 0;
-    while k < cx.touches.len() {
-        let edge = cx.touches[k].edge;
+    while k < s.touches.len() {
+        let edge = s.touches[k].edge;
         let mut after = edge;
-        while k < cx.touches.len() && cx.touches[k].edge == edge {
-            let v = cx.touches[k].vertex;
+        while k < s.touches.len() && s.touches[k].edge == edge {
+            let v = s.touches[k].vertex;
             let (p, vertex) = (cx.pool.p(v), cx.pool.get(v).vertex);
             if cx.pool.p(after) != p {
                 after = cx.pool.insert_after(after, p, vertex);
@@ -424,9 +460,9 @@ fn split_touched_edges(cx: &mut Context) {
 /// `first_split` is the pool's length before `split_touched_edges`: the nodes from there on
 /// are the splits. (`sweep.order` holds live nodes only, so its length is no such bound once
 /// `filter_ring` dropped vertices.)
-fn collect_shared(cx: &mut Context, first_split: usize) {
+fn collect_shared(cx: &mut Context, s: &mut Scratch, first_split: usize) {
     cx.shared.clear();
-    let order = &cx.sweep.order;
+    let order = &s.sweep.order;
     let mut i = 0;
     while i < order.len() {
         let p = cx.pool.p(order[i]);
@@ -440,7 +476,7 @@ fn collect_shared(cx: &mut Context, first_split: usize) {
         i = j;
     }
     // T-junction splits made new nodes at the touching vertices' positions
-    for t in &cx.touches {
+    for t in &s.touches {
         cx.shared.push(t.vertex);
     }
     let split_nodes = first_split..cx.pool.len();
@@ -452,7 +488,7 @@ fn collect_shared(cx: &mut Context, first_split: usize) {
 }
 
 /// Finds ring `r`'s rightmost vertex and makes the ring counter-clockwise.
-fn orient_ring(cx: &mut Context, r: usize) {
+fn orient_ring(cx: &mut Context, s: &mut Scratch, r: usize) {
     let start = cx.rings[r].start;
     let mut best = start;
     let mut visits = 0;
@@ -478,9 +514,10 @@ fn orient_ring(cx: &mut Context, r: usize) {
         pool.p(pool.next(best)),
     );
     let counter_clockwise = if visits > 1 {
-        outermost_edge_arrives(cx, best).or_else(|| net_boundary_counter_clockwise(cx, start))
+        outermost_edge_arrives(cx, best)
+            .or_else(|| net_boundary_counter_clockwise(&cx.pool, start, &mut s.net_edges))
     } else if turn == Orientation::Collinear {
-        net_boundary_counter_clockwise(cx, start)
+        net_boundary_counter_clockwise(&cx.pool, start, &mut s.net_edges)
     } else {
         None
     };
@@ -488,74 +525,6 @@ fn orient_ring(cx: &mut Context, r: usize) {
     if !counter_clockwise {
         cx.pool.reverse(start);
     }
-}
-
-/// Whether the ring through `start` winds counter-clockwise, read on its net boundary: its
-/// edges with every segment walked both ways cancelled (walls, spikes and cracks enclose
-/// nothing), at the rightmost-lowest position the rest reaches, by the outermost direction
-/// there that more edges arrive along than leave, or fewer (see [`outermost_edge_arrives`]).
-/// `None` when nothing is left (the ring encloses nothing). For rings whose extreme
-/// position lies on walls only, where the turns there say nothing. Exact.
-pub(crate) fn net_boundary_counter_clockwise(cx: &mut Context, start: NodeId) -> Option<bool> {
-    let mut edges = core::mem::take(&mut cx.net_edges);
-    edges.clear();
-    for n in cx.pool.ring(start) {
-        let (a, b) = (cx.pool.p(n), cx.pool.p(cx.pool.next(n)));
-        // (lower end, upper end, +1 from lower to upper, −1 back)
-        edges.push(if cmp_xy(a, b) == core::cmp::Ordering::Less {
-            (a, b, 1)
-        } else {
-            (b, a, -1)
-        });
-    }
-    edges.sort_unstable_by(|e, f| cmp_xy(e.0, f.0).then(cmp_xy(e.1, f.1)));
-    // sum the walks of each segment; keep those not cancelled
-    let mut kept = 0;
-    let mut i = 0;
-    while i < edges.len() {
-        let (a, b, mut net) = edges[i];
-        let mut j = i + 1;
-        while j < edges.len() && edges[j].0 == a && edges[j].1 == b {
-            net += edges[j].2;
-            j += 1;
-        }
-        if net != 0 {
-            edges[kept] = (a, b, net);
-            kept += 1;
-        }
-        i = j;
-    }
-    edges.truncate(kept);
-    // the rightmost-lowest end (of either kind: a lower end may be it, below an upper end
-    // straight above)
-    let x = edges.iter().flat_map(|e| [e.0, e.1]).reduce(|b, p| {
-        if p.x > b.x || (p.x == b.x && p.y < b.y) {
-            p
-        } else {
-            b
-        }
-    });
-    let result = x.and_then(|x| {
-        // (far end, net arrivals at x along it)
-        let at_x = edges.iter().filter_map(|&(a, b, net)| {
-            if b == x {
-                Some((a, net))
-            } else if a == x {
-                Some((b, -net))
-            } else {
-                None
-            }
-        });
-        let along = |q: Point| -> i64 {
-            at_x.clone()
-                .filter(|&(f, _)| orient2d(x, q, f) == Orientation::Collinear)
-                .map(|(_, d)| d)
-                .sum()
-        };
-        lowest_net_arrives(x, at_x.clone().map(|(q, _)| q), along)
-    });
-    cx.net_edges = edges;
-    result
 }
 
 /// At the rightmost-lowest position X of a ring visiting it several times: every edge at X
@@ -579,90 +548,4 @@ fn outermost_edge_arrives(cx: &Context, at: NodeId) -> Option<bool> {
     };
     let ends = visits().flat_map(|n| [pool.p(pool.prev(n)), pool.p(pool.next(n))]);
     lowest_net_arrives(x, ends, net)
-}
-
-/// Of the directions from `x` towards `ends`, all in the closed left half-plane (`x` is a
-/// rightmost-lowest position), the lowest whose `net` arrivals are not zero: whether they
-/// are more than zero. `None` when every direction nets zero.
-fn lowest_net_arrives(
-    x: Point,
-    ends: impl Iterator<Item = Point>,
-    net: impl Fn(Point) -> i64,
-) -> Option<bool> {
-    let mut lowest: Option<(Point, i64)> = None;
-    for q in ends {
-        // within a half-plane, counter-clockwise of the lowest means lower still
-        let lower = lowest.map_or(true, |(e, _)| {
-            orient2d(x, e, q) == Orientation::CounterClockwise
-        });
-        if lower {
-            let d = net(q);
-            if d != 0 {
-                lowest = Some((q, d));
-            }
-        }
-    }
-    lowest.map(|(_, d)| d > 0)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::net_boundary_counter_clockwise;
-    use crate::structures::Pool;
-    use crate::triangulator::Context;
-
-    /// The ring's winding read on its net boundary, in both directions and from every start.
-    fn net_winding(ring: &[(f64, f64)]) -> Option<bool> {
-        let mut answers = Vec::new();
-        for reversed in [false, true] {
-            for start in 0..ring.len() {
-                let mut r: Vec<(f64, f64)> = ring.to_vec();
-                if reversed {
-                    r.reverse();
-                }
-                r.rotate_left(start);
-                let (pool, starts) = Pool::from_rings(&[r]);
-                let mut cx = Context {
-                    pool,
-                    ..Context::default()
-                };
-                let got = net_boundary_counter_clockwise(&mut cx, starts[0]);
-                answers.push(if reversed { got.map(|ccw| !ccw) } else { got });
-            }
-        }
-        assert!(answers.windows(2).all(|w| w[0] == w[1]), "{answers:?}");
-        answers[0]
-    }
-
-    #[test]
-    fn walls_do_not_decide_the_winding() {
-        // a counter-clockwise square with a wall out to (6, 1) from its right side: the
-        // wall's tip is the rightmost-lowest vertex, where the ring turns straight back
-        let spiked = [
-            (0.0, 0.0),
-            (4.0, 0.0),
-            (4.0, 1.0),
-            (6.0, 1.0),
-            (4.0, 1.0),
-            (4.0, 4.0),
-            (0.0, 4.0),
-        ];
-        assert_eq!(net_winding(&spiked), Some(true));
-        // precision fuzz target, seed 8181 (shrunk): a pentagon, the same pentagon walked back
-        // round a larger one, a triangle back; only the quadrilateral F A D G is left, and
-        // it turns clockwise as given
-        let (a, b, c, d, e, f, g) = (
-            (1.0, 0.0),
-            (2.0, 1.0),
-            (2.0, 2.0),
-            (1.0, 2.0),
-            (0.0, 1.0),
-            (0.0, 0.0),
-            (0.0, 2.0),
-        );
-        let spiral = [a, b, c, d, e, a, f, e, g, d, c, b, a, e, d];
-        assert_eq!(net_winding(&spiral), Some(false));
-        // a ring walking one segment out and back encloses nothing
-        assert_eq!(net_winding(&[(0.0, 0.0), (1.0, 1.0)]), None);
-    }
 }

@@ -23,24 +23,68 @@
 //! Finally holes are turned clockwise, so that in every ring the polygon's interior lies to
 //! the left of each edge — the convention `bridge` and `clip` rely on.
 
+use crate::context::{Context, LoadedRing};
 use crate::geom::{cmp_around, cmp_xy, left_of, on_segment, orient2d, Orientation, Point};
 use crate::geom::{compare_hits, corner_contains, on_ray};
-use crate::report::{DropReason, Dropped, RepairKind};
 use crate::structures::NodeId;
-use crate::triangulator::Context;
 use crate::{Error, Nesting};
 use core::cmp::Ordering;
 
+/// Scratch buffers of the nest stage, kept between calls.
+#[derive(Debug, Default)]
+pub(crate) struct Scratch {
+    /// Rings by descending rightmost x.
+    ring_order: Vec<u32>,
+    /// Per ring: whether its depth is known yet.
+    depth_known: Vec<bool>,
+    /// The winding number of each ring touching a vertex, away from it.
+    touch_winding: Vec<i64>,
+    /// The rings passing through a position.
+    probe_rings: Vec<u32>,
+    /// Per ring, its place among the rings through the position being decided, or
+    /// `NO_SLOT`.
+    ring_slot: Vec<u32>,
+    /// The edges through the position being decided, of the rings there.
+    hub_edges: Vec<HubEdge>,
+    /// Edges met along the ray in along lists (each counted once).
+    along_seen: Vec<NodeId>,
+    /// Ring pairs `(b, q)` where ring b lies on ring q's boundary, inside it.
+    overlaps: Vec<(u32, u32)>,
+    /// Edges that cleaning dropped, with their rings.
+    dropped_edges: Vec<RingEdge>,
+    /// The rings still to decide at the position being looked at.
+    order: Vec<u32>,
+    /// The rays of `check_shared_positions`.
+    touch_nets: Vec<(Point, i32)>,
+}
+
+/// An edge through the position being decided, of a ring listed there: the ring's place
+/// in the list, and the edge's ends turned by the ray (see `Ray::turn`).
+#[derive(Clone, Copy, Debug)]
+struct HubEdge {
+    slot: u32,
+    from: Point,
+    to: Point,
+}
+
+/// An edge of ring `ring` from `a` to `b`.
+#[derive(Clone, Copy, Debug)]
+struct RingEdge {
+    ring: u32,
+    a: Point,
+    b: Point,
+}
+
 /// Decides every live ring's depth and turns holes clockwise.
-pub(crate) fn nest(cx: &mut Context, nesting: Nesting) -> Result<(), Error> {
+pub(crate) fn nest(cx: &mut Context, s: &mut Scratch, nesting: Nesting) -> Result<(), Error> {
     let alive = cx.rings.iter().filter(|r| r.alive).count();
     match nesting {
-        Nesting::Auto if alive > 1 => compute_depths(cx)?,
+        Nesting::Auto if alive > 1 => compute_depths(cx, s)?,
         Nesting::Auto => {}
         // Lobes of one ring have no ring number of their own to give them a role:
         // containment decides, which for a valid input is what the roles would say.
-        Nesting::FirstIsOuter if cx.split_lobes => compute_depths(cx)?,
-        Nesting::FirstIsOuter => first_is_outer(cx)?,
+        Nesting::FirstIsOuter if cx.split_lobes => compute_depths(cx, s)?,
+        Nesting::FirstIsOuter => first_is_outer(cx, s)?,
     }
     let mut reversed = false;
     for r in 0..cx.rings.len() {
@@ -50,11 +94,11 @@ pub(crate) fn nest(cx: &mut Context, nesting: Nesting) -> Result<(), Error> {
             reversed = true;
         }
     }
-    if reversed && cx.grid_current {
+    if reversed && cx.edge_index.is_current() {
         // the edge grid `compute_depths` built stays of use to `bridge`: in a reversed
         // ring, the edge listed as n (to its old successor) now starts at that node
         let (pool, rings) = (&cx.pool, &cx.rings);
-        cx.edge_grid.rename(|n| {
+        cx.edge_index.grid_mut().rename(|n| {
             let node = pool.get(n);
             if rings[node.ring as usize].depth % 2 == 1 {
                 node.prev
@@ -66,7 +110,7 @@ pub(crate) fn nest(cx: &mut Context, nesting: Nesting) -> Result<(), Error> {
     if cx.lenient {
         Ok(())
     } else {
-        check_shared_positions(cx)
+        check_shared_positions(cx, s)
     }
 }
 
@@ -75,13 +119,13 @@ pub(crate) fn nest(cx: &mut Context, nesting: Nesting) -> Result<(), Error> {
 /// values in the sectors between the edges there. Rings that cross each other at a shared
 /// vertex (an X of two rings, or of one ring's two visits) give three; the sweep sees no
 /// crossing there, since neither edge passes through the other's interior.
-fn check_shared_positions(cx: &mut Context) -> Result<(), Error> {
-    let mut rays = core::mem::take(&mut cx.touch_nets);
+fn check_shared_positions(cx: &mut Context, s: &mut Scratch) -> Result<(), Error> {
+    let mut rays = core::mem::take(&mut s.touch_nets);
     let mut result = Ok(());
     let mut i = 0;
     while i < cx.shared.len() {
         let o = cx.pool.p(cx.shared[i]);
-        let j = crate::touch::same_position_end(cx, i);
+        let j = cx.same_position_end(i);
         // each edge at o, as the direction away from o: +1 leaving, −1 arriving
         rays.clear();
         for &n in &cx.shared[i..j] {
@@ -115,15 +159,15 @@ fn check_shared_positions(cx: &mut Context) -> Result<(), Error> {
         }
         i = j;
     }
-    cx.touch_nets = rays;
+    s.touch_nets = rays;
     result
 }
 
 /// earcut's convention; in strict mode, checked against the computed depths.
-fn first_is_outer(cx: &mut Context) -> Result<(), Error> {
+fn first_is_outer(cx: &mut Context, s: &mut Scratch) -> Result<(), Error> {
     let outer_alive = cx.rings.first().is_some_and(|r| r.alive && r.input == 0);
     if !cx.lenient && cx.rings.len() > 1 {
-        compute_depths(cx)?;
+        compute_depths(cx, s)?;
         for r in 0..cx.rings.len() {
             let ring = cx.rings[r];
             let expected = u32::from(r != 0);
@@ -139,70 +183,42 @@ fn first_is_outer(cx: &mut Context) -> Result<(), Error> {
     if !outer_alive {
         // no outer boundary: nothing to triangulate (earcut returns nothing too)
         for r in 0..cx.rings.len() {
-            skip_ring(cx, r);
+            cx.skip_ring(r);
         }
     }
     Ok(())
-}
-
-/// Takes a ring out of the triangulation (lenient mode), reporting its vertices.
-pub(crate) fn skip_ring(cx: &mut Context, r: usize) {
-    let ring = cx.rings[r];
-    if !ring.alive {
-        return;
-    }
-    cx.rings[r].alive = false;
-    cx.repair(
-        RepairKind::HoleOutside,
-        ring.input,
-        cx.pool.get(ring.start).vertex,
-    );
-    let start = ring.start;
-    let mut n = start;
-    loop {
-        let vertex = cx.pool.get(n).vertex;
-        cx.dropped.push(Dropped {
-            vertex,
-            ring: ring.input,
-            reason: DropReason::RingSkipped,
-        });
-        n = cx.pool.next(n);
-        if n == start {
-            break;
-        }
-    }
 }
 
 /// Fills every live ring's `depth` with the number of rings containing it.
 ///
 /// Rings go by descending rightmost x: the ring whose depth [`depth_from_nearest`] builds
 /// on reaches further right than the ring asking, so it is done by then.
-fn compute_depths(cx: &mut Context) -> Result<(), Error> {
+fn compute_depths(cx: &mut Context, s: &mut Scratch) -> Result<(), Error> {
     if direct_depths(cx) {
         return Ok(());
     }
-    index_all_edges(cx);
-    cx.ring_slot.clear();
-    cx.ring_slot.resize(cx.rings.len(), NO_SLOT);
-    cx.depth_known.clear();
-    cx.depth_known.resize(cx.rings.len(), false);
-    cx.overlaps.clear();
-    let mut order = core::mem::take(&mut cx.ring_order);
+    cx.edge_index.rebuild(&cx.pool, &cx.rings);
+    s.ring_slot.clear();
+    s.ring_slot.resize(cx.rings.len(), NO_SLOT);
+    s.depth_known.clear();
+    s.depth_known.resize(cx.rings.len(), false);
+    s.overlaps.clear();
+    let mut order = core::mem::take(&mut s.ring_order);
     order.clear();
     order.extend((0..cx.rings.len() as u32).filter(|&r| cx.rings[r as usize].alive));
     let (pool, rings) = (&cx.pool, &cx.rings);
     let x = |r: u32| pool.p(rings[r as usize].rightmost).x;
     order.sort_unstable_by(|&a, &b| x(b).total_cmp(&x(a)).then(a.cmp(&b)));
     for &r in &order {
-        cx.rings[r as usize].depth = depth_of(cx, r as usize);
-        cx.depth_known[r as usize] = true;
+        cx.rings[r as usize].depth = depth_of(cx, s, r as usize);
+        s.depth_known[r as usize] = true;
     }
-    cx.ring_order = order;
+    s.ring_order = order;
     // b lies on q's boundary, inside q: valid only when q bounds b's region from outside
     // and b bounds a hole in q's region (or the other way round), so that their windings
     // cancel. Equal depths (the same ring twice, each inside the other, say) double it.
     let rings = &cx.rings;
-    let overlapping = cx
+    let overlapping = s
         .overlaps
         .iter()
         .find(|&&(b, q)| rings[b as usize].depth != rings[q as usize].depth + 1);
@@ -245,7 +261,7 @@ fn direct_depths(cx: &mut Context) -> bool {
         }
         let pool = &cx.pool;
         let v = pool.p(cx.rings[b].start);
-        let around = |ring: &crate::triangulator::Ring| {
+        let around = |ring: &crate::context::Ring| {
             let winding: i64 = pool
                 .ring(ring.start)
                 .map(|n| crossing(pool.p(n), pool.p(pool.next(n)), v))
@@ -260,36 +276,10 @@ fn direct_depths(cx: &mut Context) -> bool {
     true
 }
 
-/// Lists every live edge in the grid index.
-pub(crate) fn index_all_edges(cx: &mut Context) {
-    let mut lo = Point::new(f64::INFINITY, f64::INFINITY);
-    let mut hi = Point::new(f64::NEG_INFINITY, f64::NEG_INFINITY);
-    let mut edges = 0;
-    for ring in cx.rings.iter().filter(|r| r.alive) {
-        for n in cx.pool.ring(ring.start) {
-            // coordinates are finite: plain comparisons, without `f64::min`'s NaN handling
-            let p = cx.pool.p(n);
-            lo.x = if p.x < lo.x { p.x } else { lo.x };
-            lo.y = if p.y < lo.y { p.y } else { lo.y };
-            hi.x = if p.x > hi.x { p.x } else { hi.x };
-            hi.y = if p.y > hi.y { p.y } else { hi.y };
-            edges += 1;
-        }
-    }
-    cx.edge_grid.reset(lo, hi, edges);
-    for ring in cx.rings.iter().filter(|r| r.alive) {
-        for n in cx.pool.ring(ring.start) {
-            cx.edge_grid
-                .insert(n, cx.pool.p(n), cx.pool.p(cx.pool.next(n)));
-        }
-    }
-    cx.grid_current = true;
-}
-
 /// The number of rings containing ring `b`, decided at its rightmost vertex — or, for the
 /// rings along both of b's edges there, at the next vertex of b that decides them, or at
 /// one of b's input vertices that cleaning dropped.
-fn depth_of(cx: &mut Context, b: usize) -> u32 {
+fn depth_of(cx: &mut Context, s: &mut Scratch, b: usize) -> u32 {
     let first = cx.rings[b].rightmost;
     if nodes_at(cx, cx.pool.p(first)) > FEW_AT_A_HUB {
         // Many rings meet there, and deciding b there costs time in their number, for
@@ -302,51 +292,51 @@ fn depth_of(cx: &mut Context, b: usize) -> u32 {
                 break;
             }
             if nodes_at(cx, cx.pool.p(v)) <= FEW_AT_A_HUB {
-                if let Some(depth) = depth_at(cx, b, v) {
+                if let Some(depth) = depth_at(cx, s, b, v) {
                     return depth;
                 }
             }
             v = cx.pool.next(v);
         }
     }
-    let mut depth = decide_at(cx, b, first);
+    let mut depth = decide_at(cx, s, b, first);
     // A ring left open at the rightmost vertex is decided at the next vertex of b that
     // can, each decision kept (b a lobe lying on another ring, with a third ring through
     // some of its vertices, decides the third ring elsewhere than the second).
     let mut v = cx.pool.next(first);
-    while v != first && !cx.order.is_empty() {
-        depth += decide_open_at(cx, b, v, Probe::Clear);
+    while v != first && !s.order.is_empty() {
+        depth += decide_open_at(cx, s, b, v, Probe::Clear);
         v = cx.pool.next(v);
     }
     // Rings no vertex decided with a clear probe: at the first vertex with an edge off them.
     let mut v = first;
-    while !cx.order.is_empty() {
-        depth += decide_open_at(cx, b, v, Probe::OffRing);
+    while !s.order.is_empty() {
+        depth += decide_open_at(cx, s, b, v, Probe::OffRing);
         v = cx.pool.next(v);
         if v == first {
             break;
         }
     }
-    if cx.order.is_empty() {
+    if s.order.is_empty() {
         depth
     } else {
-        depth + depth_by_dropped(cx, b)
+        depth + depth_by_dropped(cx, s, b)
     }
 }
 
-/// How many of the rings still open (`cx.order`) contain ring `b`, every corner of which
+/// How many of the rings still open (`s.order`) contain ring `b`, every corner of which
 /// lies on them with both its edges: each is decided at the first of b's input vertices
 /// off it, the ones cleaning dropped included (the tip of a zero-width spike, say, may
 /// leave a ring that b otherwise lies on). "Off" counts the edges cleaning dropped, as the
 /// oracle does. An open ring holding all of them has b's boundary on its own, with b's
 /// corners inside its corners: it contains b ([`compute_depths`] checks that their depths
-/// then differ by one, from `cx.overlaps`).
-fn depth_by_dropped(cx: &mut Context, b: usize) -> u32 {
+/// then differ by one, from `s.overlaps`).
+fn depth_by_dropped(cx: &mut Context, s: &mut Scratch, b: usize) -> u32 {
     let mut depth = 0;
     // the edges of the open rings that cleaning dropped: each has a dropped end
-    let mut dropped = core::mem::take(&mut cx.dropped_edges);
+    let mut dropped = core::mem::take(&mut s.dropped_edges);
     dropped.clear();
-    for &q in &cx.order {
+    for &q in &s.order {
         let block = loaded(cx, q as usize);
         let node = |i: usize| &cx.pool.nodes[i];
         for i in block.clone() {
@@ -356,56 +346,60 @@ fn depth_by_dropped(cx: &mut Context, b: usize) -> u32 {
                 i + 1
             };
             if node(i).removed || node(after).removed {
-                dropped.push((q, node(i).p, node(after).p));
+                dropped.push(RingEdge {
+                    ring: q,
+                    a: node(i).p,
+                    b: node(after).p,
+                });
             }
         }
     }
-    let mut counts = core::mem::take(&mut cx.touch_winding);
-    let mut through = core::mem::take(&mut cx.probe_rings);
+    let mut counts = core::mem::take(&mut s.touch_winding);
+    let mut through = core::mem::take(&mut s.probe_rings);
     for i in loaded(cx, b) {
-        if cx.order.is_empty() {
+        if s.order.is_empty() {
             break;
         }
         let p = cx.pool.nodes[i].p;
-        let mut slot = core::mem::take(&mut cx.ring_slot);
+        let mut slot = core::mem::take(&mut s.ring_slot);
         rings_through(cx, b, p, &mut through, &mut slot);
         clear_slots(&through, &mut slot);
         through.sort_unstable();
         counts.clear();
-        counts.resize(cx.order.len(), 0);
-        set_slots(&cx.order, &mut slot);
-        let mut along = core::mem::take(&mut cx.along_seen);
+        counts.resize(s.order.len(), 0);
+        set_slots(&s.order, &mut slot);
+        let mut along = core::mem::take(&mut s.along_seen);
         winding_number(cx, b, p, &mut counts, &slot, &mut along);
-        cx.along_seen = along;
-        clear_slots(&cx.order, &mut slot);
-        cx.ring_slot = slot;
+        s.along_seen = along;
+        clear_slots(&s.order, &mut slot);
+        s.ring_slot = slot;
         let mut k = 0;
-        cx.order.retain(|q| {
+        s.order.retain(|q| {
             let on_q = through.binary_search(q).is_ok()
                 || dropped
                     .iter()
-                    .any(|&(r, a, c)| r == *q && on_segment(a, c, p));
+                    .any(|e| e.ring == *q && on_segment(e.a, e.b, p));
             depth += u32::from(!on_q && counts[k] > 0);
             k += 1;
             on_q
         });
     }
-    cx.probe_rings = through;
-    cx.touch_winding = counts;
-    cx.dropped_edges = dropped;
+    s.probe_rings = through;
+    s.touch_winding = counts;
+    s.dropped_edges = dropped;
     // Two rings with one boundary each lie on the other, and both count the other: strict
     // mode refuses that below (the oracle, too, sees the region covered twice). Lenient
     // mode makes the one decided first the inside one, so that they cancel, as the
     // even-odd rule has it; that is also what the input means where the two are lobes
     // of rings cut by `lobes` (the same lobe of two figure eights).
     if cx.lenient {
-        let overlaps = &cx.overlaps;
-        cx.order.retain(|&q| !overlaps.contains(&(q, b as u32)));
+        let overlaps = &s.overlaps;
+        s.order.retain(|&q| !overlaps.contains(&(q, b as u32)));
     }
-    for &q in &cx.order {
-        cx.overlaps.push((b as u32, q));
+    for &q in &s.order {
+        s.overlaps.push((b as u32, q));
     }
-    depth + cx.order.len() as u32
+    depth + s.order.len() as u32
 }
 
 /// Past this many nodes at a ring's rightmost position, [`depth_of`] looks for a vertex
@@ -427,16 +421,17 @@ fn nodes_at(cx: &Context, p: Point) -> usize {
 /// The pool indices of the nodes loaded for ring `r`, in input order; none for a ring
 /// split into lobes (its loaded nodes now lie on several rings).
 fn loaded(cx: &Context, r: usize) -> core::ops::RangeInclusive<usize> {
-    if crate::lobes::was_split(cx, r) {
+    if cx.is_lobe(r) {
         #[allow(clippy::reversed_empty_ranges)]
         return 1..=0;
     }
-    let (first, count) = cx.blocks.get(r).copied().unwrap_or((0, 0));
+    let LoadedRing { first, len: count } =
+        (cx.as_loaded.get(r).copied()).unwrap_or(LoadedRing { first: 0, len: 0 });
     let first = first as usize;
     first..=(first + count as usize).saturating_sub(1).max(first)
 }
 
-/// No place: the ring does not pass the position being decided (see `cx.ring_slot`).
+/// No place: the ring does not pass the position being decided (see `s.ring_slot`).
 const NO_SLOT: u32 = u32::MAX;
 
 /// The live rings other than `b` with an edge through `p`, into `out`, each once, in the
@@ -445,7 +440,7 @@ const NO_SLOT: u32 = u32::MAX;
 /// many rings pass costs time linear in them.
 fn rings_through(cx: &Context, b: usize, p: Point, out: &mut Vec<u32>, slot: &mut [u32]) {
     out.clear();
-    for n in cx.edge_grid.query(p, p) {
+    for n in cx.edge_index.grid().query(p, p) {
         let node = cx.pool.get(n);
         let ring = node.ring;
         if ring as usize == b || node.removed || !cx.rings[ring as usize].alive {
@@ -474,28 +469,28 @@ fn clear_slots(rings: &[u32], slot: &mut [u32]) {
 
 /// The depth of ring `b` decided at its node `v`, or `None` when both of b's edges at v
 /// run along rings passing through v's position.
-fn depth_at(cx: &mut Context, b: usize, v: NodeId) -> Option<u32> {
-    let depth = decide_at(cx, b, v);
-    cx.order.is_empty().then_some(depth)
+fn depth_at(cx: &mut Context, s: &mut Scratch, b: usize, v: NodeId) -> Option<u32> {
+    let depth = decide_at(cx, s, b, v);
+    s.order.is_empty().then_some(depth)
 }
 
 /// How many rings contain ring `b`, among those that decide it at its node `v`: every ring
 /// off v's position by the winding number, the rings passing through it locally. The rings
-/// along both of b's edges at v decide nothing there and are left open in `cx.order`.
-fn decide_at(cx: &mut Context, b: usize, v: NodeId) -> u32 {
+/// along both of b's edges at v decide nothing there and are left open in `s.order`.
+fn decide_at(cx: &mut Context, s: &mut Scratch, b: usize, v: NodeId) -> u32 {
     let pv = cx.pool.p(v);
     // Rings passing through V: decided locally, their windings kept apart.
-    let mut touching = core::mem::take(&mut cx.order);
-    let mut slot = core::mem::take(&mut cx.ring_slot);
+    let mut touching = core::mem::take(&mut s.order);
+    let mut slot = core::mem::take(&mut s.ring_slot);
     rings_through(cx, b, pv, &mut touching, &mut slot);
-    cx.order = touching;
-    cx.ring_slot = slot;
-    if cx.order.is_empty() && v == cx.rings[b].rightmost && cx.crossings.is_empty() {
-        if let Some(depth) = depth_from_nearest(cx, b, pv) {
+    s.order = touching;
+    s.ring_slot = slot;
+    if s.order.is_empty() && v == cx.rings[b].rightmost && cx.crossings.is_empty() {
+        if let Some(depth) = depth_from_nearest(cx, s, b, pv) {
             return depth;
         }
     }
-    let (winding, depth) = decide_listed(cx, b, v, Probe::Clear);
+    let (winding, depth) = decide_listed(cx, s, b, v, Probe::Clear);
     winding.max(0) as u32 + depth
 }
 
@@ -511,41 +506,51 @@ enum Probe {
     OffRing,
 }
 
-/// How many of the rings still open (`cx.order`) contain ring `b`, decided at b's node `v`
-/// as [`decide_at`] decides them; those it cannot decide there stay in `cx.order`.
-fn decide_open_at(cx: &mut Context, b: usize, v: NodeId, probe: Probe) -> u32 {
-    set_slots(&cx.order, &mut cx.ring_slot);
-    decide_listed(cx, b, v, probe).1
+/// How many of the rings still open (`s.order`) contain ring `b`, decided at b's node `v`
+/// as [`decide_at`] decides them; those it cannot decide there stay in `s.order`.
+fn decide_open_at(cx: &mut Context, s: &mut Scratch, b: usize, v: NodeId, probe: Probe) -> u32 {
+    set_slots(&s.order, &mut s.ring_slot);
+    decide_listed(cx, s, b, v, probe).1
 }
 
-/// Decides at b's node `v` which rings of `cx.order` (their places set in `cx.ring_slot`,
+/// Decides at b's node `v` which rings of `s.order` (their places set in `s.ring_slot`,
 /// cleared here) contain ring `b`: one off v's position by its winding number, one through
-/// it by its corner there ([`locally_inside`]); those undecided stay in `cx.order`.
-/// Returns the winding number of the other rings, and how many of `cx.order` contain b.
-fn decide_listed(cx: &mut Context, b: usize, v: NodeId, probe: Probe) -> (i64, u32) {
+/// it by its corner there ([`locally_inside`]); those undecided stay in `s.order`.
+/// Returns the winding number of the other rings, and how many of `s.order` contain b.
+fn decide_listed(
+    cx: &mut Context,
+    s: &mut Scratch,
+    b: usize,
+    v: NodeId,
+    probe: Probe,
+) -> (i64, u32) {
     let pv = cx.pool.p(v);
-    let mut slot = core::mem::take(&mut cx.ring_slot);
-    let mut beyond = core::mem::take(&mut cx.touch_winding);
+    let mut slot = core::mem::take(&mut s.ring_slot);
+    let mut beyond = core::mem::take(&mut s.touch_winding);
     beyond.clear();
-    beyond.resize(cx.order.len(), 0);
-    let mut along = core::mem::take(&mut cx.along_seen);
+    beyond.resize(s.order.len(), 0);
+    let mut along = core::mem::take(&mut s.along_seen);
     let (winding, ray) = winding_number(cx, b, pv, &mut beyond, &slot, &mut along);
-    cx.along_seen = along;
+    s.along_seen = along;
     // the listed rings' edges through V, turned, grouped by ring
-    let mut edges = core::mem::take(&mut cx.hub_edges);
+    let mut edges = core::mem::take(&mut s.hub_edges);
     edges.clear();
     // whether b's edges at v (to its successor, from its predecessor) run along another
     // ring's edge through v
     let (vn, vp) = (cx.pool.p(cx.pool.next(v)), cx.pool.p(cx.pool.prev(v)));
     let mut shared = [false; 2];
-    for n in cx.edge_grid.query(pv, pv) {
+    for n in cx.edge_index.grid().query(pv, pv) {
         let node = cx.pool.get(n);
         let (k, next) = (slot[node.ring as usize], cx.pool.p(node.next));
         if node.removed || !on_segment(node.p, next, pv) {
             continue;
         }
         if k != NO_SLOT {
-            edges.push((k, ray.turn(node.p), ray.turn(next)));
+            edges.push(HubEdge {
+                slot: k,
+                from: ray.turn(node.p),
+                to: ray.turn(next),
+            });
         }
         if probe == Probe::Clear && node.ring as usize != b {
             for (d, along) in [vn, vp].into_iter().zip(&mut shared) {
@@ -553,15 +558,15 @@ fn decide_listed(cx: &mut Context, b: usize, v: NodeId, probe: Probe) -> (i64, u
             }
         }
     }
-    edges.sort_unstable_by_key(|e| e.0);
-    clear_slots(&cx.order, &mut slot);
-    cx.ring_slot = slot;
+    edges.sort_unstable_by_key(|e| e.slot);
+    clear_slots(&s.order, &mut slot);
+    s.ring_slot = slot;
     let mut depth = 0;
     let mut open = 0;
     let mut from = 0;
     for (k, &base) in beyond.iter().enumerate() {
-        let r = cx.order[k];
-        let to = from + edges[from..].partition_point(|e| e.0 == k as u32);
+        let r = s.order[k];
+        let to = from + edges[from..].partition_point(|e| e.slot == k as u32);
         let decided = if from == to {
             Some(base > 0)
         } else {
@@ -570,15 +575,15 @@ fn decide_listed(cx: &mut Context, b: usize, v: NodeId, probe: Probe) -> (i64, u
         match decided {
             Some(inside) => depth += u32::from(inside),
             None => {
-                cx.order[open] = r;
+                s.order[open] = r;
                 open += 1;
             }
         }
         from = to;
     }
-    cx.order.truncate(open);
-    cx.touch_winding = beyond;
-    cx.hub_edges = edges;
+    s.order.truncate(open);
+    s.touch_winding = beyond;
+    s.hub_edges = edges;
     (winding, depth)
 }
 
@@ -591,8 +596,8 @@ fn decide_listed(cx: &mut Context, b: usize, v: NodeId, probe: Probe) -> (i64, u
 ///
 /// The walk along the grid row stops as in `bridge::nearest_hit`: edges not seen yet lie
 /// wholly in later columns.
-fn depth_from_nearest(cx: &Context, b: usize, pv: Point) -> Option<u32> {
-    let grid = &cx.edge_grid;
+fn depth_from_nearest(cx: &Context, s: &Scratch, b: usize, pv: Point) -> Option<u32> {
+    let grid = &cx.edge_index.grid();
     let mut near = Nearest::default();
     let row = grid.row(pv.y);
     for n in grid.long().iter().copied().chain(grid.row_list(row)) {
@@ -615,16 +620,16 @@ fn depth_from_nearest(cx: &Context, b: usize, pv: Point) -> Option<u32> {
         if near.touch_x.is_infinite() {
             return (!near.through_origin).then_some(0);
         }
-        return depth_from_vertex(cx, &near, pv, touch);
+        return depth_from_vertex(cx, s, &near, pv, touch);
     };
-    if near.tie || near.through_origin || !cx.depth_known[hit.ring] {
+    if near.tie || near.through_origin || !s.depth_known[hit.ring] {
         return None;
     }
     if near.touch_x.is_finite() {
         // a point where an edge meets the ray's line at an endpoint: nearer than the hit,
         // the vertex there decides (if alone); on the hit's edge, nothing here does
         match orient2d(hit.lo, hit.hi, touch) {
-            Orientation::CounterClockwise => return depth_from_vertex(cx, &near, pv, touch),
+            Orientation::CounterClockwise => return depth_from_vertex(cx, s, &near, pv, touch),
             Orientation::Collinear => return None,
             Orientation::Clockwise => {}
         }
@@ -637,12 +642,18 @@ fn depth_from_nearest(cx: &Context, b: usize, pv: Point) -> Option<u32> {
 /// when that direction lies inside W's corner (R is counter-clockwise here). `None` when
 /// that is not decisive: several nodes at `touch`, an edge along the ray, the ray through
 /// the origin, or R's depth not known yet.
-fn depth_from_vertex(cx: &Context, near: &Nearest, pv: Point, touch: Point) -> Option<u32> {
+fn depth_from_vertex(
+    cx: &Context,
+    s: &Scratch,
+    near: &Nearest,
+    pv: Point,
+    touch: Point,
+) -> Option<u32> {
     let w = near
         .touch_node
         .filter(|_| !near.touch_shared && !near.through_origin)?;
     let ring = cx.pool.get(w).ring as usize;
-    if touch.x <= pv.x || !cx.depth_known[ring] {
+    if touch.x <= pv.x || !s.depth_known[ring] {
         return None;
     }
     let (next, prev) = (cx.pool.p(cx.pool.next(w)), cx.pool.p(cx.pool.prev(w)));
@@ -754,9 +765,9 @@ impl Nearest {
     }
 }
 
-/// The winding number of the rings other than `b` and those in `cx.order` (touching V)
+/// The winding number of the rings other than `b` and those in `s.order` (touching V)
 /// around `pv`, by a ray along the grid row or column with the fewest cells to the edge,
-/// and that ray. The crossings with the edges of `cx.order[k]` go to `touching[k]`
+/// and that ray. The crossings with the edges of `s.order[k]` go to `touching[k]`
 /// instead (edges through `pv` cross nothing). `along` is scratch: the edges listed along
 /// their segments in the walk's cells, each counted once.
 fn winding_number(
@@ -767,7 +778,7 @@ fn winding_number(
     slot: &[u32],
     along: &mut Vec<NodeId>,
 ) -> (i64, Ray) {
-    let grid = &cx.edge_grid;
+    let grid = &cx.edge_index.grid();
     let (row, column) = (grid.row(pv.y), grid.column(pv.x));
     let (nx, ny) = (grid.columns(), grid.rows());
     let ray = [
@@ -903,7 +914,7 @@ fn crossing(a: Point, b: Point, v: Point) -> i64 {
 fn locally_inside(
     cx: &Context,
     v: NodeId,
-    r_edges: &[(u32, Point, Point)],
+    r_edges: &[HubEdge],
     ray: Ray,
     base: i64,
     shared: [bool; 2],
@@ -911,7 +922,7 @@ fn locally_inside(
     let pv = cx.pool.p(v);
     let o = ray.turn(pv);
     // r's edges through v, as turned points: the edge's start and end
-    let edges = || r_edges.iter().map(|&(_, from, to)| (from, to));
+    let edges = || r_edges.iter().map(|e| (e.from, e.to));
     let along_r = |d: Point| {
         edges().any(|(from, to)| [from, to].into_iter().any(|e| e != o && on_ray(o, e, d)))
     };

@@ -25,33 +25,52 @@
 
 use core::cmp::Ordering;
 
+use crate::context::Context;
 use crate::geom::{compare_hits, corner_contains, on_ray};
 use crate::geom::{left_of, orient2d, Orientation, Point};
-use crate::nest::{index_all_edges, skip_ring};
 use crate::structures::NodeId;
-use crate::triangulator::Context;
 use crate::Error;
 
+/// Scratch buffers of the bridge stage, kept between calls.
+#[derive(Debug, Default)]
+pub(crate) struct Scratch {
+    /// The holes, by descending rightmost x (ties: lower y, then ring number).
+    order: Vec<u32>,
+}
+
+/// How a lenient run bridges holes whose rightmost vertex pokes into a hole bridged
+/// before, and what it found.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Careful {
+    /// Bridge such a hole from one of its vertices that sees its target properly (a
+    /// costly search: only the careful rerun asks for it).
+    pub bridges: bool,
+    /// Set when some bridge left the polygon (the careful rerun may then do better).
+    pub bridge_left: bool,
+}
+
 /// Merges every live hole (odd depth) into the ring around it.
-pub(crate) fn bridge(cx: &mut Context) -> Result<(), Error> {
-    cx.order.clear();
+pub(crate) fn bridge(
+    cx: &mut Context,
+    s: &mut Scratch,
+    careful: &mut Careful,
+) -> Result<(), Error> {
+    careful.bridge_left = false;
+    s.order.clear();
     for r in 0..cx.rings.len() {
         let ring = &mut cx.rings[r];
         ring.merged = ring.alive && ring.depth % 2 == 0;
         ring.component = r as u32;
         if ring.alive && ring.depth % 2 == 1 {
-            cx.order.push(r as u32);
+            s.order.push(r as u32);
         }
     }
-    if cx.order.is_empty() {
+    if s.order.is_empty() {
         return Ok(());
     }
-    if !cx.grid_current {
-        index_all_edges(cx);
-    }
-    debug_assert!(grid_lists_every_edge(cx), "a stale edge grid");
+    cx.edge_index.ensure(&cx.pool, &cx.rings);
     let (pool, rings) = (&cx.pool, &cx.rings);
-    cx.order.sort_unstable_by(|&a, &b| {
+    s.order.sort_unstable_by(|&a, &b| {
         let (pa, pb) = (
             pool.p(rings[a as usize].rightmost),
             pool.p(rings[b as usize].rightmost),
@@ -60,41 +79,27 @@ pub(crate) fn bridge(cx: &mut Context) -> Result<(), Error> {
             .then(pa.y.total_cmp(&pb.y))
             .then(a.cmp(&b))
     });
-    for k in 0..cx.order.len() {
-        let hole = cx.order[k] as usize;
-        eliminate_hole(cx, hole)?;
+    for k in 0..s.order.len() {
+        let hole = s.order[k] as usize;
+        eliminate_hole(cx, careful, hole)?;
     }
     Ok(())
 }
 
-/// Whether the edge grid lists every edge of the live rings under the node it starts at,
-/// at both ends (debug builds check this where `bridge` reuses the grid `nest` built).
-fn grid_lists_every_edge(cx: &Context) -> bool {
-    cx.rings.iter().filter(|r| r.alive).all(|ring| {
-        cx.pool.ring(ring.start).all(|n| {
-            // listed where the edge's box lies: at both ends, at least
-            let (a, b) = (cx.pool.p(n), cx.pool.p(cx.pool.next(n)));
-            [a, b]
-                .iter()
-                .all(|&p| cx.edge_grid.query(p, p).any(|e| e == n))
-        })
-    })
-}
-
 /// Bridges one hole into the ring around it.
-fn eliminate_hole(cx: &mut Context, hole: usize) -> Result<(), Error> {
+fn eliminate_hole(cx: &mut Context, careful: &mut Careful, hole: usize) -> Result<(), Error> {
     let mut m = cx.rings[hole].rightmost;
     let target = match find_touching(cx, m) {
         Some(x) => Target::Touching(x),
-        None => match find_bridge(cx, m) {
+        None => match find_hole_bridge(cx, m) {
             Some(x) if cx.lenient && bridge_leaves_polygon(cx, m, x) => {
                 // M pokes into a hole bridged before (their edges cross): the bridge runs
                 // inside that hole, or out of it across its boundary, and turns the hole
                 // inside out. The careful run bridges from a vertex of the hole that sees
                 // its target properly; the others keep the ray's choice (see `triangulate`).
-                cx.bridge_left = true;
+                careful.bridge_left = true;
                 // (only the careful run looks for that vertex: the search is costly)
-                let elsewhere = if cx.careful_bridges {
+                let elsewhere = if careful.bridges {
                     bridge_from_elsewhere(cx, m, true)
                 } else {
                     None
@@ -114,7 +119,7 @@ fn eliminate_hole(cx: &mut Context, hole: usize) -> Result<(), Error> {
                     Target::Visible(x)
                 }
                 None => {
-                    skip_ring(cx, hole);
+                    cx.skip_ring(hole);
                     return Ok(());
                 }
             },
@@ -173,7 +178,7 @@ fn bridge_from_elsewhere(
 ) -> Option<(NodeId, NodeId)> {
     let mut v = cx.pool.next(m);
     while v != m {
-        if let Some(x) = find_bridge(cx, v) {
+        if let Some(x) = find_hole_bridge(cx, v) {
             if clear_of_merged && bridge_leaves_polygon(cx, v, x) {
                 v = cx.pool.next(v);
                 continue;
@@ -213,7 +218,8 @@ fn bridge_leaves_polygon(cx: &Context, m: NodeId, x: NodeId) -> bool {
     }
     let lo = Point::new(pm.x.min(px.x), pm.y.min(px.y));
     let hi = Point::new(pm.x.max(px.x), pm.y.max(px.y));
-    cx.edge_grid
+    cx.edge_index
+        .grid()
         .query(lo, hi)
         .any(|e| is_merged(cx, e) && crate::geom::crosses(pm, px, pool.p(e), pool.p(pool.next(e))))
 }
@@ -229,8 +235,8 @@ enum Target {
 
 /// Lists the current edge starting at `n` in the grid index again.
 fn register(cx: &mut Context, n: NodeId) {
-    cx.edge_grid
-        .insert(n, cx.pool.p(n), cx.pool.p(cx.pool.next(n)));
+    let (a, b) = (cx.pool.p(n), cx.pool.p(cx.pool.next(n)));
+    cx.edge_index.grid_mut().insert(n, a, b);
 }
 
 /// Whether node `n` is on a ring that is merged already (and still linked).
@@ -247,7 +253,7 @@ fn is_merged(cx: &Context, n: NodeId) -> bool {
 fn find_touching(cx: &Context, m: NodeId) -> Option<NodeId> {
     let pm = cx.pool.p(m);
     let (mn, mp) = (cx.pool.p(cx.pool.next(m)), cx.pool.p(cx.pool.prev(m)));
-    cx.edge_grid.query(pm, pm).find(|&x| {
+    cx.edge_index.grid().query(pm, pm).find(|&x| {
         if !is_merged(cx, x) || cx.pool.p(x) != pm {
             return false;
         }
@@ -276,7 +282,7 @@ fn input_depth(cx: &Context, n: NodeId) -> u32 {
 
 /// The node M connects to, found by the ray cast and the triangle search; `None` when the
 /// ray hits nothing (the hole lies outside every polygon).
-fn find_bridge(cx: &Context, m: NodeId) -> Option<NodeId> {
+fn find_hole_bridge(cx: &Context, m: NodeId) -> Option<NodeId> {
     let pm = cx.pool.p(m);
     let (a, b) = nearest_hit(cx, pm)?;
     let (pa, pb) = (cx.pool.p(a), cx.pool.p(b));
@@ -304,7 +310,7 @@ fn find_bridge(cx: &Context, m: NodeId) -> Option<NodeId> {
 /// edge ends within the columns walked, no later edge can be hit nearer (columns are
 /// monotone in x), and the walk stops.
 fn nearest_hit(cx: &Context, pm: Point) -> Option<(NodeId, NodeId)> {
-    let grid = &cx.edge_grid;
+    let grid = &cx.edge_index.grid();
     let mut best = None;
     let row = grid.row(pm.y);
     for a in grid.long().iter().copied().chain(grid.row_list(row)) {
@@ -366,7 +372,7 @@ fn least_angle_in_triangle(
     let mut best = p;
     let box_lo = Point::new(pm.x, ylo);
     let box_hi = Point::new(pa.x.max(pb.x), yhi);
-    for r in cx.edge_grid.query(box_lo, box_hi) {
+    for r in cx.edge_index.grid().query(box_lo, box_hi) {
         // the position first: most candidates fail there, without a look at their ring
         let node = cx.pool.get(r);
         let q = node.p;
@@ -403,7 +409,7 @@ fn least_angle_in_triangle(
 /// the node whose corner holds M is of the polygon around M.
 fn visible_node_at(cx: &Context, target: Point, pm: Point, component: u32) -> Option<NodeId> {
     let (mut on_side, mut fallback, mut elsewhere, mut tip) = (None, None, None, None);
-    for x in cx.edge_grid.query(target, target) {
+    for x in cx.edge_index.grid().query(target, target) {
         let node = cx.pool.get(x);
         if node.removed || node.p != target || !cx.rings[node.ring as usize].merged {
             continue;
@@ -435,16 +441,11 @@ fn visible_node_at(cx: &Context, target: Point, pm: Point, component: u32) -> Op
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::triangulator::Context;
-    use crate::{clean, load, nest, Nesting};
 
     /// Runs the stages up to bridging; returns the outer ring's vertex sequence.
     fn bridged(vertices: &[[f64; 2]], starts: &[usize]) -> Vec<u32> {
-        let mut cx = Context::default();
-        load::load(&mut cx, vertices, starts).unwrap();
-        clean::clean(&mut cx, false).unwrap();
-        nest::nest(&mut cx, Nesting::Auto).unwrap();
-        bridge(&mut cx).unwrap();
+        let (mut cx, mut st) = crate::testing::nested(vertices, starts, false);
+        bridge(&mut cx, &mut st.bridge, &mut Careful::default()).unwrap();
         let start = cx.rings[0].start;
         cx.pool.ring(start).map(|n| cx.pool.get(n).vertex).collect()
     }

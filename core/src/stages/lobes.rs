@@ -40,14 +40,14 @@
 //! not, and a lobe inside the rest turning the same way, where no other ring cancels it,
 //! as `Error::RingWindsTwice` (see `touch`).
 
+use crate::context::{Context, Ring};
 use crate::geom::{cmp_around, cmp_xy, Point};
 use crate::structures::NodeId;
-use crate::triangulator::{Context, Ring};
 use core::cmp::Ordering;
 
 /// Scratch buffers of the lobe split, kept between calls.
 #[derive(Debug, Default)]
-pub(crate) struct LobeScratch {
+pub(crate) struct Scratch {
     /// Per node: the index into `cx.shared` of its position's first node, or `NONE`.
     group: Vec<u32>,
     /// Per position (by its first index into `cx.shared`): how often the ring being split
@@ -74,22 +74,19 @@ pub(crate) struct LobeScratch {
     cycle: Vec<u32>,
     /// Cycle labels handed out so far.
     labels: u32,
-    /// Rings re-paired somewhere, so split into lobes (or at least not in input order).
-    rings: Vec<u32>,
 }
 
 const NONE: u32 = u32::MAX;
 
 /// Re-pairs every ring that crosses itself at a position it passes more than once
 /// (lenient mode), splitting it into lobes. Returns whether any ring was re-paired.
-pub(crate) fn split(cx: &mut Context) -> bool {
-    let mut s = core::mem::take(&mut cx.lobes);
-    s.rings.clear();
+pub(crate) fn split(cx: &mut Context, s: &mut Scratch) -> bool {
+    cx.lobe_rings.clear();
     s.candidates.clear();
     // rings visiting one position twice, from the groups of shared nodes
     let mut i = 0;
     while i < cx.shared.len() {
-        let j = crate::touch::same_position_end(cx, i);
+        let j = cx.same_position_end(i);
         for a in i..j {
             let ra = cx.pool.get(cx.shared[a]).ring;
             let repeats = cx.shared[a + 1..j]
@@ -110,7 +107,7 @@ pub(crate) fn split(cx: &mut Context) -> bool {
         s.cycle.resize(cx.pool.len(), NONE);
         let mut i = 0;
         while i < cx.shared.len() {
-            let j = crate::touch::same_position_end(cx, i);
+            let j = cx.same_position_end(i);
             for &n in &cx.shared[i..j] {
                 s.group[n.idx()] = i as u32;
             }
@@ -118,20 +115,19 @@ pub(crate) fn split(cx: &mut Context) -> bool {
         }
         for k in 0..s.candidates.len() {
             let r = s.candidates[k];
-            if split_ring(cx, &mut s, r as usize) {
-                s.rings.push(r);
+            if split_ring(cx, s, r as usize) {
+                cx.lobe_rings.push(r);
             }
         }
     }
-    let split_any = !s.rings.is_empty();
-    cx.lobes = s;
-    split_any
+    cx.split_lobes = !cx.lobe_rings.is_empty();
+    cx.split_lobes
 }
 
 /// Re-pairs ring `r` where it crosses itself, cuts the cycles that gives apart where they
 /// touch themselves (where that crosses nothing), then gives each cycle a ring entry of
 /// its own. Returns whether anything was re-paired or cut.
-fn split_ring(cx: &mut Context, s: &mut LobeScratch, r: usize) -> bool {
+fn split_ring(cx: &mut Context, s: &mut Scratch, r: usize) -> bool {
     let ring = cx.rings[r];
     if !ring.alive {
         return false;
@@ -246,9 +242,9 @@ fn label(cx: &Context, cycle: &mut [u32], v: NodeId, l: u32) {
 /// Fills `s.at` with ring `r`'s nodes at the position whose nodes start at `cx.shared[g]`
 /// (its visits there) and `s.ends` with their edges' ends, sorted around the position;
 /// edges lying on one another by lane, reversed at the segment's other end.
-fn sorted_ends(cx: &Context, s: &mut LobeScratch, g: usize, r: u32) -> Point {
+fn sorted_ends(cx: &Context, s: &mut Scratch, g: usize, r: u32) -> Point {
     let o = cx.pool.p(cx.shared[g]);
-    let end = crate::touch::same_position_end(cx, g);
+    let end = cx.same_position_end(g);
     s.at.clear();
     s.ends.clear();
     for &m in &cx.shared[g..end] {
@@ -289,7 +285,7 @@ fn nested(ends: &[(Point, u32, bool, u32, NodeId)], stack: &mut Vec<u32>) -> boo
 
 /// At the position whose nodes start at `cx.shared[g]`, pairs ring `r`'s edges again as
 /// nested brackets if two of its visits cross there; the new links go to `s.pairs`.
-fn repair(cx: &Context, s: &mut LobeScratch, g: usize, r: u32) {
+fn repair(cx: &Context, s: &mut Scratch, g: usize, r: u32) {
     sorted_ends(cx, s, g, r);
     if nested(&s.ends, &mut s.stack) {
         return;
@@ -323,7 +319,7 @@ const MOST_VISITS_CUT: usize = 64;
 /// At the position whose nodes start at `cx.shared[g]`, cuts every cycle of ring `r` that
 /// passes it twice into two, where the new pairs cross no other there. Returns whether
 /// it cut any.
-fn cut(cx: &mut Context, s: &mut LobeScratch, g: usize, r: u32) -> bool {
+fn cut(cx: &mut Context, s: &mut Scratch, g: usize, r: u32) -> bool {
     sorted_ends(cx, s, g, r);
     let k = s.at.len();
     if !(2..=MOST_VISITS_CUT).contains(&k) {
@@ -379,14 +375,8 @@ fn cut(cx: &mut Context, s: &mut LobeScratch, g: usize, r: u32) -> bool {
     any
 }
 
-/// Whether ring `r` is a lobe, or what is left of a ring split into lobes.
-pub(crate) fn was_split(cx: &Context, r: usize) -> bool {
-    cx.split_lobes && (r >= cx.blocks.len() || cx.lobes.rings.contains(&(r as u32)))
-}
-
 #[cfg(test)]
 mod tests {
-    use crate::triangulator::Context;
 
     /// Loads and cleans `rings` in lenient mode; returns each live ring's positions,
     /// checking that its links and ring numbers agree.
@@ -397,12 +387,7 @@ mod tests {
             starts.push(vertices.len());
             vertices.extend_from_slice(ring);
         }
-        let mut cx = Context {
-            lenient: true,
-            ..Context::default()
-        };
-        crate::load::load(&mut cx, &vertices, &starts).unwrap();
-        assert!(crate::clean::clean(&mut cx, false).unwrap());
+        let (cx, _) = crate::testing::cleaned(&vertices, &starts, true);
         let mut out = Vec::new();
         for (r, ring) in cx.rings.iter().enumerate().filter(|(_, r)| r.alive) {
             let nodes: Vec<_> = cx.pool.ring(ring.start).collect();
@@ -568,9 +553,7 @@ mod tests {
             [-4.0, 1.0],
             [-4.0, -1.0],
         ];
-        let mut cx = Context::default();
-        crate::load::load(&mut cx, &petals, &[0]).unwrap();
-        assert!(crate::clean::clean(&mut cx, false).unwrap());
+        let (cx, _) = crate::testing::cleaned(&petals, &[0], false);
         assert_eq!(cx.rings.iter().filter(|r| r.alive).count(), 1);
         assert!(!cx.split_lobes);
     }

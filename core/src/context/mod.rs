@@ -1,0 +1,129 @@
+//! Layer 4, the context: the state the stages share — the node pool, the ring table, what
+//! was dropped and repaired, where rings touch, which edges cross, and an index of the
+//! edges that knows whether it is current. Each stage's scratch buffers are its own (see
+//! the stage modules); the triangulator owns them and lends them to the stage it runs.
+
+mod edge_index;
+mod winding;
+
+pub(crate) use edge_index::EdgeIndex;
+pub(crate) use winding::{lowest_net_arrives, net_boundary_counter_clockwise, NetEdge};
+
+use crate::crossings::sweep::Crossing;
+use crate::report::{DropReason, Dropped, Repair, RepairKind};
+use crate::structures::{NodeId, Pool};
+
+/// One ring after loading. Rings are indexed in load order, which is input order.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Ring {
+    /// Position in the caller's `ring_starts`.
+    pub input: u32,
+    /// A live node of the ring.
+    pub start: NodeId,
+    /// Live nodes in the ring.
+    pub len: u32,
+    /// Rightmost node (ties: lowest y); the paper's M for holes.
+    pub rightmost: NodeId,
+    /// Containment depth: even for outer boundaries, odd for holes.
+    pub depth: u32,
+    /// Still part of the input (not degenerate, not skipped).
+    pub alive: bool,
+    /// Part of an outer boundary's ring by now: an outer ring, or a hole bridged into one.
+    pub merged: bool,
+    /// The outer ring whose polygon this ring belongs to once bridged (itself for outers).
+    pub component: u32,
+}
+
+/// Where a ring's nodes lie in the pool as loaded: together, in input order.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct LoadedRing {
+    /// The ring's first node.
+    pub first: u32,
+    /// How many nodes it was loaded with.
+    pub len: u32,
+}
+
+/// What the stages share: the node pool, the ring table, what was dropped and repaired,
+/// and what one stage found for the next. Stages are functions over this context and
+/// their own scratch.
+#[derive(Debug, Default)]
+pub(crate) struct Context {
+    /// Every ring's nodes, linked in circular lists by index.
+    pub pool: Pool,
+    /// The rings, in input order (then the lobes `lobes` splits off).
+    pub rings: Vec<Ring>,
+    /// Input vertices left out, and why (for the `Report`).
+    pub dropped: Vec<Dropped>,
+    /// What lenient mode repaired (for the `Report`).
+    pub repairs: Vec<Repair>,
+    /// Lenient mode: repair instead of refusing.
+    pub lenient: bool,
+    /// `clean` keeps straight vertices: a first try dropped one where edges then crossed.
+    /// Set for the rest of the call (every lenient rerun included).
+    pub keep_collinear: bool,
+    /// Per ring as loaded: where its nodes lie (set by `clean`, read by `nest`, `lobes`).
+    pub as_loaded: Vec<LoadedRing>,
+    /// The crossing edges `clean`'s sweep found (lenient mode; strict mode refuses them).
+    pub crossings: Vec<Crossing>,
+    /// Nodes at positions held by several nodes, sorted by position (set by `clean`, read
+    /// by `lobes`, `nest` and `touch`).
+    pub shared: Vec<NodeId>,
+    /// Lenient mode: some ring touching itself was split into its lobes (by `lobes`).
+    pub split_lobes: bool,
+    /// The input rings `lobes` split (their lobes are the rings after `as_loaded`'s).
+    pub lobe_rings: Vec<u32>,
+    /// The live edges in a grid, built by `nest` and reused by `bridge`.
+    pub edge_index: EdgeIndex,
+}
+
+impl Context {
+    /// Empties the context for a new run (buffers kept).
+    pub(crate) fn reset(&mut self, lenient: bool) {
+        self.pool.clear();
+        self.rings.clear();
+        self.dropped.clear();
+        self.repairs.clear();
+        self.lenient = lenient;
+        self.split_lobes = false;
+        self.edge_index.invalidate();
+    }
+
+    /// Records a lenient-mode repair.
+    pub fn repair(&mut self, kind: RepairKind, ring: u32, vertex: u32) {
+        self.repairs.push(Repair { kind, ring, vertex });
+    }
+
+    /// Takes a ring out of the triangulation (lenient mode), reporting its vertices.
+    pub fn skip_ring(&mut self, r: usize) {
+        let ring = self.rings[r];
+        if !ring.alive {
+            return;
+        }
+        self.rings[r].alive = false;
+        let first = self.pool.get(ring.start).vertex;
+        self.repair(RepairKind::HoleOutside, ring.input, first);
+        for n in self.pool.ring(ring.start) {
+            let vertex = self.pool.get(n).vertex;
+            self.dropped.push(Dropped {
+                vertex,
+                ring: ring.input,
+                reason: DropReason::RingSkipped,
+            });
+        }
+    }
+
+    /// The end of the run of `shared` from `i` on whose nodes share one position.
+    pub fn same_position_end(&self, i: usize) -> usize {
+        let p = self.pool.p(self.shared[i]);
+        let mut j = i + 1;
+        while j < self.shared.len() && self.pool.p(self.shared[j]) == p {
+            j += 1;
+        }
+        j
+    }
+
+    /// Whether ring `r` is a lobe, or what is left of a ring split into lobes.
+    pub fn is_lobe(&self, r: usize) -> bool {
+        self.split_lobes && (r >= self.as_loaded.len() || self.lobe_rings.contains(&(r as u32)))
+    }
+}

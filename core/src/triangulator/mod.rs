@@ -1,0 +1,128 @@
+//! Layer 6, the triangulator: the public [`Triangulator`], which owns the context and
+//! every stage's scratch, and is the only code that runs the stages
+//! ([`pipeline`] in order, [`lenient`] for the policy of reruns on crossing input).
+
+mod lenient;
+pub(crate) mod pipeline;
+
+use core::marker::PhantomData;
+
+use crate::context::Context;
+use crate::geom::Coord;
+use crate::report::Report;
+use crate::{Error, Options};
+
+/// Triangulates polygons with holes and islands; reuse it to avoid allocation.
+///
+/// `T` is the coordinate type, `f32` or `f64`.
+///
+/// ```
+/// # fn main() -> Result<(), polytri::Error> {
+/// let mut tri = polytri::Triangulator::<f32>::new();
+/// let opts = polytri::Options::default()
+///     .with_strategy(polytri::Strategy::Quality)
+///     .with_nesting(polytri::Nesting::FirstIsOuter)
+///     .with_lenient(true);
+/// let vertices = [[0.0f32, 0.0], [4.0, 0.0], [4.0, 3.0], [0.0, 3.0]];
+/// let mut out: Vec<[u32; 3]> = Vec::new();
+/// let report = tri.triangulate(&vertices, &[0], &opts, &mut out)?;
+/// assert_eq!(out.len(), 2);
+/// assert!(report.dropped.is_empty());
+/// # Ok(())
+/// # }
+/// ```
+#[derive(Debug)]
+pub struct Triangulator<T: Coord> {
+    cx: Context,
+    stages: pipeline::Stages,
+    reruns: lenient::Reruns,
+    _coord: PhantomData<fn(T)>,
+}
+
+impl<T: Coord> Default for Triangulator<T> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl<T: Coord> Triangulator<T> {
+    /// A triangulator with empty buffers; they grow on first use and are kept.
+    pub fn new() -> Self {
+        Triangulator {
+            cx: Context::default(),
+            stages: pipeline::Stages::default(),
+            reruns: lenient::Reruns::default(),
+            _coord: PhantomData,
+        }
+    }
+
+    /// Runs strict mode's input check alone, without triangulating: the same loading,
+    /// cleaning (the edge sweep that refuses crossings) and nesting (holes inside their
+    /// polygons) that [`Triangulator::triangulate`] runs first, with `nesting` as in
+    /// [`Options::with_nesting`]. `Ok` means no edges cross and every hole lies inside its
+    /// polygon; the error is the one strict `triangulate` gives. (A few defects of weakly
+    /// simple rings only show while clipping, such as [`Error::LobesWindOpposite`].) Useful
+    /// to validate data once, or to see what the check costs (`polytri bench` times it).
+    ///
+    /// ```
+    /// # fn main() -> Result<(), polytri::Error> {
+    /// let mut tri = polytri::Triangulator::<f64>::new();
+    /// let square = [[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]];
+    /// tri.check(&square, &[0], polytri::Nesting::Auto)?;
+    /// let bow_tie = [[0.0, 0.0], [4.0, 4.0], [4.0, 0.0], [0.0, 4.0]];
+    /// assert!(tri.check(&bow_tie, &[0], polytri::Nesting::Auto).is_err());
+    /// # Ok(())
+    /// # }
+    /// ```
+    ///
+    /// # Errors
+    ///
+    /// Those of strict [`Triangulator::triangulate`] about the input.
+    pub fn check(
+        &mut self,
+        vertices: &[[T; 2]],
+        ring_starts: &[usize],
+        nesting: crate::Nesting,
+    ) -> Result<(), Error> {
+        let cx = &mut self.cx;
+        cx.keep_collinear = false;
+        cx.reset(false);
+        pipeline::check_input(cx, &mut self.stages, vertices, ring_starts, nesting, false)?;
+        Ok(())
+    }
+
+    /// Triangulates the rings given by `vertices` and `ring_starts`.
+    ///
+    /// `ring_starts[k]` is the index of ring `k`'s first vertex; the first entry is 0 and
+    /// each ring runs to the next start (the last to the end). A closing point equal to the
+    /// first is allowed. Winding order does not matter.
+    ///
+    /// `out` is cleared and filled with triangles: indices into `vertices`,
+    /// counter-clockwise with y up.
+    ///
+    /// # Errors
+    ///
+    /// Bad input is refused with an [`Error`] saying what and where: non-finite coordinates,
+    /// malformed `ring_starts`, too many vertices, and in strict mode (the default) crossing
+    /// edges or misplaced holes. With [`Options::with_lenient`] only `TooManyVertices` and
+    /// `Internal` remain; everything else is repaired and listed in the [`Report`].
+    pub fn triangulate(
+        &mut self,
+        vertices: &[[T; 2]],
+        ring_starts: &[usize],
+        options: &Options,
+        out: &mut Vec<[u32; 3]>,
+    ) -> Result<Report<'_>, Error> {
+        let cx = &mut self.cx;
+        let (stages, reruns) = (&mut self.stages, &mut self.reruns);
+        let (polygons, holes) =
+            lenient::triangulate(cx, stages, reruns, vertices, ring_starts, options, out)?;
+        Ok(Report {
+            triangles: out.len(),
+            polygons,
+            holes,
+            dropped: &cx.dropped,
+            repairs: &cx.repairs,
+        })
+    }
+}

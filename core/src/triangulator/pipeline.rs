@@ -1,0 +1,73 @@
+//! The stages in order, and the scratch each one owns.
+//!
+//! ```text
+//! load ─► clean ─► [lobes] ─► clean::orient_rings ─► nest ─► touch ─► bridge ─► clip
+//! ```
+//!
+//! Only this module and [`super::lenient`] call stages. Each stage leaves its guarantee
+//! in the shared [`Context`] for the next (see `ARCHITECTURE.md`).
+
+use crate::context::Context;
+use crate::geom::Coord;
+use crate::stages::{bridge, clean, clip, load, lobes, nest, touch};
+use crate::{Error, Nesting};
+
+/// Every stage's scratch buffers, kept between calls so that a warm triangulator
+/// allocates nothing.
+#[derive(Debug, Default)]
+pub(crate) struct Stages {
+    pub clean: clean::Scratch,
+    pub lobes: lobes::Scratch,
+    pub nest: nest::Scratch,
+    pub touch: touch::Scratch,
+    pub bridge: bridge::Scratch,
+    pub clip: clip::Scratch,
+}
+
+/// Loads and checks the input: `load`, `clean` (and in lenient mode on input without
+/// crossings, `lobes`), then `nest`. With `untwist`, bow ties are uncrossed first (see
+/// [`super::lenient`]); `Ok(false)` when there was none, so the run would repeat the last.
+pub(crate) fn check_input<T: Coord>(
+    cx: &mut Context,
+    st: &mut Stages,
+    vertices: &[[T; 2]],
+    ring_starts: &[usize],
+    nesting: Nesting,
+    untwist: bool,
+) -> Result<bool, Error> {
+    if !load_and_clean(cx, st, vertices, ring_starts, untwist)? {
+        return Ok(false);
+    }
+    nest::nest(cx, &mut st.nest, nesting)?;
+    Ok(true)
+}
+
+/// `load`, `clean` and (lenient, no crossings) `lobes`: every ring proper and oriented
+/// counter-clockwise. `Ok(false)` as [`check_input`].
+pub(crate) fn load_and_clean<T: Coord>(
+    cx: &mut Context,
+    st: &mut Stages,
+    vertices: &[[T; 2]],
+    ring_starts: &[usize],
+    untwist: bool,
+) -> Result<bool, Error> {
+    load::load(cx, vertices, ring_starts)?;
+    if !clean::clean(cx, &mut st.clean, untwist)? {
+        return Ok(false);
+    }
+    // (crossing input has no region to keep, and its repairs, untwisting included, were
+    // tuned on whole rings)
+    if cx.lenient && !untwist && cx.crossings.is_empty() {
+        lobes::split(cx, &mut st.lobes);
+    }
+    clean::orient_rings(cx, &mut st.clean);
+    Ok(true)
+}
+
+/// `touch`: joins rings where they meet, so that every boundary is weakly simple, and
+/// refuses (strict) rings winding twice. Returns the number of holes.
+pub(crate) fn join(cx: &mut Context, st: &mut Stages) -> Result<usize, Error> {
+    let holes = touch::join(cx, &mut st.touch);
+    touch::refuse_rings_winding_twice(cx, &mut st.touch)?;
+    Ok(holes)
+}

@@ -26,7 +26,7 @@
 //!
 //! The pipeline, one module per stage: `load` → `clean` (and, lenient, `lobes`) → `nest` (and `touch`) → `bridge` →
 //! `clip`.
-//! See `DESIGN.md` in the repository.
+//! See `ARCHITECTURE.md` in the repository for the layers and the invariants of each stage.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 

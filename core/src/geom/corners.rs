@@ -43,3 +43,53 @@ pub(crate) fn same_ray(o: Point, a: Point, q: Point) -> bool {
     let sy = |p: Point| p.y.partial_cmp(&o.y);
     sx(a) == sx(q) && sy(a) == sy(q) && (a != o) && (q != o)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn p(x: f64, y: f64) -> Point {
+        Point::new(x, y)
+    }
+
+    #[test]
+    fn corner_tests() {
+        let o = p(0., 0.);
+        // convex corner from +x to +y
+        assert_eq!(
+            corner_contains(o, p(1., 0.), p(0., 1.), p(1., 1.)),
+            Some(true)
+        );
+        assert_eq!(
+            corner_contains(o, p(1., 0.), p(0., 1.), p(-1., -1.)),
+            Some(false)
+        );
+        assert_eq!(corner_contains(o, p(1., 0.), p(0., 1.), p(2., 0.)), None);
+        // reflex corner from +y to +x (270°)
+        assert_eq!(
+            corner_contains(o, p(0., 1.), p(1., 0.), p(-1., -1.)),
+            Some(true)
+        );
+        assert_eq!(
+            corner_contains(o, p(0., 1.), p(1., 0.), p(1., 1.)),
+            Some(false)
+        );
+        assert_eq!(
+            corner_contains(o, p(0., 1.), p(1., 0.), p(-1., 0.)),
+            Some(true)
+        );
+        assert_eq!(
+            corner_contains(o, p(0., 1.), p(1., 0.), p(0., -1.)),
+            Some(true)
+        );
+        // straight corner from +x to -x: the upper half-plane
+        assert_eq!(
+            corner_contains(o, p(1., 0.), p(-1., 0.), p(0., 1.)),
+            Some(true)
+        );
+        assert_eq!(
+            corner_contains(o, p(1., 0.), p(-1., 0.), p(0., -1.)),
+            Some(false)
+        );
+    }
+}

@@ -549,3 +549,164 @@ fn outermost_edge_arrives(cx: &Context, at: NodeId) -> Option<bool> {
     let ends = visits().flat_map(|n| [pool.p(pool.prev(n)), pool.p(pool.next(n))]);
     lowest_net_arrives(x, ends, net)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::testing::cleaned;
+
+    /// The kept vertices of each live ring, from its least input vertex on.
+    fn kept(cx: &Context) -> Vec<Vec<u32>> {
+        let mut out = Vec::new();
+        for ring in cx.rings.iter().filter(|r| r.alive) {
+            let mut v: Vec<u32> = cx
+                .pool
+                .ring(ring.start)
+                .map(|n| cx.pool.get(n).vertex)
+                .collect();
+            let least = (0..v.len()).min_by_key(|&k| v[k]).unwrap_or(0);
+            v.rotate_left(least);
+            out.push(v);
+        }
+        out
+    }
+
+    fn reasons(cx: &Context) -> Vec<(u32, DropReason)> {
+        let mut d: Vec<_> = cx.dropped.iter().map(|d| (d.vertex, d.reason)).collect();
+        d.sort_unstable_by_key(|&(v, _)| v);
+        d
+    }
+
+    #[test]
+    fn repeated_collinear_and_spike_vertices_are_dropped() {
+        let vertices = [
+            [0.0, 0.0],
+            [2.0, 0.0], // collinear: on the bottom edge
+            [4.0, 0.0],
+            [4.0, 0.0], // repeated
+            [4.0, 2.0],
+            [6.0, 2.0], // the tip of a spike out and straight back
+            [4.0, 2.0],
+            [4.0, 4.0],
+            [0.0, 4.0],
+            [0.0, 0.0], // closing point
+        ];
+        let (cx, _) = cleaned(&vertices, &[0], false);
+        // the square's corners are left (either copy of the closing point); (4, 2), where
+        // the spike was, is straight once the spike is gone
+        let ring = &kept(&cx)[0];
+        let at = |v: u32| vertices[v as usize];
+        let corners: Vec<[f64; 2]> = ring.iter().map(|&v| at(v)).collect();
+        assert_eq!(corners.len(), 4, "{ring:?}");
+        for corner in [[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]] {
+            assert!(corners.contains(&corner), "{corner:?} in {corners:?}");
+        }
+        let r = reasons(&cx);
+        assert_eq!(r.len(), 6, "{r:?}");
+        assert!(r.contains(&(1, DropReason::Collinear)), "{r:?}");
+        assert!(r.contains(&(3, DropReason::Repeated)), "{r:?}");
+        assert!(r.contains(&(5, DropReason::Spike)), "{r:?}");
+        let closing = r
+            .iter()
+            .filter(|&&(v, d)| (v == 0 || v == 9) && d == DropReason::Repeated);
+        assert_eq!(closing.count(), 1, "{r:?}");
+    }
+
+    #[test]
+    fn a_ring_of_no_area_is_dropped() {
+        let vertices = [
+            [0.0, 0.0],
+            [4.0, 0.0],
+            [4.0, 4.0],
+            [0.0, 4.0],
+            [1.0, 1.0],
+            [2.0, 2.0],
+            [3.0, 3.0],
+        ];
+        let (cx, _) = cleaned(&vertices, &[0, 4], false);
+        assert_eq!(kept(&cx), vec![vec![0, 1, 2, 3]]);
+        assert!(reasons(&cx)
+            .iter()
+            .any(|&(_, r)| r == DropReason::DegenerateRing));
+    }
+
+    #[test]
+    fn every_ring_comes_out_counter_clockwise() {
+        // an outer ring given clockwise, a hole given counter-clockwise
+        let vertices = [
+            [0.0, 0.0],
+            [0.0, 4.0],
+            [4.0, 4.0],
+            [4.0, 0.0],
+            [1.0, 1.0],
+            [2.0, 1.0],
+            [1.0, 2.0],
+        ];
+        let (cx, _) = cleaned(&vertices, &[0, 4], false);
+        for ring in cx.rings.iter().filter(|r| r.alive) {
+            let n = ring.rightmost;
+            let (a, b, c) = (
+                cx.pool.p(cx.pool.prev(n)),
+                cx.pool.p(n),
+                cx.pool.p(cx.pool.next(n)),
+            );
+            assert_eq!(orient2d(a, b, c), Orientation::CounterClockwise);
+            // the rightmost vertex, ties by lowest y
+            assert!(cx.pool.ring(ring.start).all(|m| {
+                let q = cx.pool.p(m);
+                q.x < b.x || (q.x == b.x && q.y >= b.y)
+            }));
+        }
+    }
+
+    #[test]
+    fn a_vertex_on_another_rings_edge_splits_it() {
+        // a hole whose corner (4, 2) lies inside the outer ring's right edge
+        let vertices = [
+            [0.0, 0.0],
+            [4.0, 0.0],
+            [4.0, 4.0],
+            [0.0, 4.0],
+            [4.0, 2.0],
+            [2.0, 3.0],
+            [2.0, 1.0],
+        ];
+        let (cx, _) = cleaned(&vertices, &[0, 4], false);
+        let outer = kept(&cx)[0].clone();
+        // the outer ring now passes through the hole's vertex 4 between 1 and 2
+        assert_eq!(outer, vec![0, 1, 4, 2, 3]);
+        // and both nodes at (4, 2) are listed as sharing a position, with one index
+        let at: Vec<NodeId> = cx
+            .shared
+            .iter()
+            .copied()
+            .filter(|&n| cx.pool.p(n) == Point::new(4.0, 2.0))
+            .collect();
+        assert_eq!(at.len(), 2);
+        assert!(at.iter().all(|&n| cx.pool.get(n).vertex == 4));
+    }
+
+    #[test]
+    fn crossing_edges_are_refused_in_strict_mode_and_listed_in_lenient() {
+        let bow_tie = [[0.0, 0.0], [4.0, 4.0], [4.0, 0.0], [0.0, 4.0]];
+        let mut cx = Context::default();
+        cx.reset(false);
+        let mut s = Scratch::default();
+        crate::stages::load::load(&mut cx, &bow_tie, &[0]).unwrap();
+        let err = clean(&mut cx, &mut s, false);
+        assert!(
+            matches!(
+                err,
+                Err(Error::EdgesCross {
+                    ring_a: 0,
+                    ring_b: 0,
+                    ..
+                })
+            ),
+            "{err:?}"
+        );
+        let (cx, _) = cleaned(&bow_tie, &[0], true);
+        assert_eq!(cx.crossings.len(), 1);
+        assert!(cx.repairs.iter().any(|r| r.kind == RepairKind::EdgesCross));
+    }
+}

@@ -159,3 +159,126 @@ fn load_finite<T: Coord>(
 fn position<T: Coord>(v: &[T; 2]) -> Point {
     Point::new(v[0].to_f64() + 0.0, v[1].to_f64() + 0.0)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::report::DropReason;
+
+    fn loaded(
+        vertices: &[[f64; 2]],
+        starts: &[usize],
+        lenient: bool,
+    ) -> (Context, Result<(), Error>) {
+        let mut cx = Context::default();
+        cx.reset(lenient);
+        let result = load(&mut cx, vertices, starts);
+        (cx, result)
+    }
+
+    const SQUARE_AND_HOLE: [[f64; 2]; 7] = [
+        [0.0, 0.0],
+        [4.0, 0.0],
+        [4.0, 4.0],
+        [0.0, 4.0],
+        [1.0, 1.0],
+        [2.0, 2.0],
+        [1.0, 2.0],
+    ];
+
+    #[test]
+    fn rings_become_circular_lists_in_input_order() {
+        let (cx, result) = loaded(&SQUARE_AND_HOLE, &[0, 4], false);
+        assert_eq!(result, Ok(()));
+        assert_eq!(cx.rings.len(), 2);
+        for (r, (first, len)) in [(0u32, 4u32), (4, 3)].into_iter().enumerate() {
+            let ring = cx.rings[r];
+            assert_eq!((ring.input, ring.len), (r as u32, len));
+            let vertices: Vec<u32> = cx
+                .pool
+                .ring(ring.start)
+                .map(|n| cx.pool.get(n).vertex)
+                .collect();
+            assert_eq!(vertices, (first..first + len).collect::<Vec<_>>());
+            for n in cx.pool.ring(ring.start) {
+                assert_eq!(cx.pool.prev(cx.pool.next(n)), n);
+                assert_eq!(cx.pool.get(n).ring, r as u32);
+            }
+        }
+    }
+
+    #[test]
+    fn bad_ring_starts_are_refused_where_they_are() {
+        let v = &SQUARE_AND_HOLE;
+        assert_eq!(
+            loaded(v, &[1, 4], false).1,
+            Err(Error::FirstRingStart { start: Some(1) })
+        );
+        assert_eq!(
+            loaded(v, &[], false).1,
+            Err(Error::FirstRingStart { start: None })
+        );
+        assert_eq!(
+            loaded(v, &[0, 4, 3], false).1,
+            Err(Error::RingStartsNotIncreasing {
+                ring: 2,
+                start: 3,
+                previous: 4
+            })
+        );
+        assert_eq!(
+            loaded(v, &[0, 9], false).1,
+            Err(Error::RingStartOutOfRange {
+                ring: 1,
+                start: 9,
+                len: 7
+            })
+        );
+        // lenient mode skips the bad start and says so
+        let (cx, result) = loaded(v, &[0, 9, 4], true);
+        assert_eq!(result, Ok(()));
+        assert_eq!(cx.rings.len(), 2);
+        assert!(cx
+            .repairs
+            .iter()
+            .any(|r| r.kind == RepairKind::RingStartIgnored && r.ring == 1));
+    }
+
+    #[test]
+    fn non_finite_coordinates_are_refused_or_dropped() {
+        for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+            let mut v = SQUARE_AND_HOLE;
+            v[5][1] = bad;
+            assert_eq!(
+                loaded(&v, &[0, 4], false).1,
+                Err(Error::NonFinite { vertex: 5 })
+            );
+            let (cx, result) = loaded(&v, &[0, 4], true);
+            assert_eq!(result, Ok(()));
+            let dropped: Vec<_> = cx
+                .dropped
+                .iter()
+                .filter(|d| d.reason == DropReason::NonFinite)
+                .collect();
+            assert_eq!(dropped.len(), 1);
+            assert_eq!((dropped[0].vertex, dropped[0].ring), (5, 1));
+            assert!(cx
+                .pool
+                .nodes
+                .iter()
+                .all(|n| n.p.x.is_finite() && n.p.y.is_finite()));
+        }
+    }
+
+    #[test]
+    fn no_vertices_load_nothing() {
+        let (cx, result) = loaded(&[], &[], false);
+        assert_eq!(result, Ok(()));
+        assert!(cx.rings.is_empty() && cx.pool.len() == 0);
+        // an f32 input is widened exactly
+        let mut cx = Context::default();
+        let v32 = [[0.1f32, 0.2], [1.0, 0.0], [0.0, 1.0]];
+        assert_eq!(load(&mut cx, &v32, &[0]), Ok(()));
+        assert_eq!(cx.pool.p(cx.rings[0].start).x, f64::from(0.1f32));
+    }
+}

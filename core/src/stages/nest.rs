@@ -970,49 +970,139 @@ fn locally_inside(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::testing::cleaned;
 
-    fn p(x: f64, y: f64) -> Point {
-        Point::new(x, y)
+    /// Rings as (vertices, starts), each ring's points given.
+    fn rings(rings: &[&[[f64; 2]]]) -> (Vec<[f64; 2]>, Vec<usize>) {
+        let mut vertices = Vec::new();
+        let mut starts = Vec::new();
+        for ring in rings {
+            starts.push(vertices.len());
+            vertices.extend_from_slice(ring);
+        }
+        (vertices, starts)
+    }
+
+    /// A square from (x, y) with side `s`, counter-clockwise or clockwise.
+    fn square(x: f64, y: f64, s: f64, ccw: bool) -> Vec<[f64; 2]> {
+        let mut v = vec![[x, y], [x + s, y], [x + s, y + s], [x, y + s]];
+        if !ccw {
+            v.reverse();
+        }
+        v
+    }
+
+    /// Nests `rings` by `nesting`; each input ring's depth (`None` when not alive) and
+    /// whether it turns clockwise now.
+    fn depths(
+        rings_in: &[&[[f64; 2]]],
+        nesting: Nesting,
+        lenient: bool,
+    ) -> Result<Vec<Option<(u32, bool)>>, Error> {
+        let (vertices, starts) = rings(rings_in);
+        let (mut cx, mut st) = cleaned(&vertices, &starts, lenient);
+        nest(&mut cx, &mut st.nest, nesting)?;
+        let mut out = vec![None; rings_in.len()];
+        for ring in cx.rings.iter().filter(|r| r.alive) {
+            let n = ring.rightmost;
+            let (a, b, c) = (
+                cx.pool.p(cx.pool.prev(n)),
+                cx.pool.p(n),
+                cx.pool.p(cx.pool.next(n)),
+            );
+            let clockwise = orient2d(a, b, c) == Orientation::Clockwise;
+            out[ring.input as usize] = Some((ring.depth, clockwise));
+        }
+        Ok(out)
     }
 
     #[test]
-    fn corner_tests() {
-        let o = p(0., 0.);
-        // convex corner from +x to +y
+    fn depth_is_containment_in_any_order_and_winding() {
+        let outer = square(0.0, 0.0, 12.0, true);
+        let hole = square(2.0, 2.0, 8.0, true);
+        let island = square(4.0, 4.0, 4.0, false);
+        let lake = square(5.0, 5.0, 2.0, true);
+        let apart = square(20.0, 0.0, 2.0, false);
+        let expected = [
+            Some((0, false)),
+            Some((1, true)),
+            Some((2, false)),
+            Some((3, true)),
+            Some((0, false)),
+        ];
+        let all = [&outer[..], &hole, &island, &lake, &apart];
+        assert_eq!(depths(&all, Nesting::Auto, false), Ok(expected.to_vec()));
+        // listed inside out: the same depths
+        let reversed = [&apart[..], &lake, &island, &hole, &outer];
+        let mut want = expected.to_vec();
+        want.reverse();
+        assert_eq!(depths(&reversed, Nesting::Auto, false), Ok(want));
+    }
+
+    #[test]
+    fn rings_through_a_shared_vertex_are_decided_locally() {
+        // a triangular hole whose corner is the outer square's corner, and one touching
+        // the outer ring in the middle of an edge
+        let outer = square(0.0, 0.0, 8.0, true);
+        let corner_hole = [[0.0, 0.0], [3.0, 1.0], [1.0, 3.0]];
+        let edge_hole = [[8.0, 4.0], [6.0, 5.0], [6.0, 3.0]];
+        let got = depths(&[&outer, &corner_hole, &edge_hole], Nesting::Auto, false);
         assert_eq!(
-            corner_contains(o, p(1., 0.), p(0., 1.), p(1., 1.)),
-            Some(true)
+            got,
+            Ok(vec![Some((0, false)), Some((1, true)), Some((1, true))])
         );
-        assert_eq!(
-            corner_contains(o, p(1., 0.), p(0., 1.), p(-1., -1.)),
-            Some(false)
+        // a square touching the outer square from outside at a corner is no hole
+        let outside = square(8.0, 8.0, 2.0, true);
+        let got = depths(&[&outer, &outside], Nesting::Auto, false);
+        assert_eq!(got, Ok(vec![Some((0, false)), Some((0, false))]));
+    }
+
+    #[test]
+    fn first_is_outer_is_verified() {
+        let outer = square(0.0, 0.0, 8.0, true);
+        let hole = square(2.0, 2.0, 2.0, true);
+        let away = square(10.0, 0.0, 2.0, true);
+        let got = depths(&[&outer, &hole], Nesting::FirstIsOuter, false);
+        assert_eq!(got, Ok(vec![Some((0, false)), Some((1, true))]));
+        // a "hole" outside its outer ring is refused
+        let err = depths(&[&outer, &away], Nesting::FirstIsOuter, false);
+        assert!(
+            matches!(err, Err(Error::HoleOutside { ring: 1, .. })),
+            "{err:?}"
         );
-        assert_eq!(corner_contains(o, p(1., 0.), p(0., 1.), p(2., 0.)), None);
-        // reflex corner from +y to +x (270°)
-        assert_eq!(
-            corner_contains(o, p(0., 1.), p(1., 0.), p(-1., -1.)),
-            Some(true)
-        );
-        assert_eq!(
-            corner_contains(o, p(0., 1.), p(1., 0.), p(1., 1.)),
-            Some(false)
-        );
-        assert_eq!(
-            corner_contains(o, p(0., 1.), p(1., 0.), p(-1., 0.)),
-            Some(true)
-        );
-        assert_eq!(
-            corner_contains(o, p(0., 1.), p(1., 0.), p(0., -1.)),
-            Some(true)
-        );
-        // straight corner from +x to -x: the upper half-plane
-        assert_eq!(
-            corner_contains(o, p(1., 0.), p(-1., 0.), p(0., 1.)),
-            Some(true)
-        );
-        assert_eq!(
-            corner_contains(o, p(1., 0.), p(-1., 0.), p(0., -1.)),
-            Some(false)
-        );
+        // lenient mode takes the roles as given (bridging skips a hole it cannot reach)
+        let got = depths(&[&outer, &away], Nesting::FirstIsOuter, true);
+        assert_eq!(got, Ok(vec![Some((0, false)), Some((1, true))]));
+    }
+
+    #[test]
+    fn the_same_ring_twice_overlaps() {
+        let a = square(0.0, 0.0, 4.0, true);
+        let got = depths(&[&a, &a], Nesting::Auto, false);
+        assert!(matches!(got, Err(Error::RingsOverlap { .. })), "{got:?}");
+        // a hole sharing an edge with its outer ring lies on it, but bounds a hole: valid
+        let outer = square(0.0, 0.0, 4.0, true);
+        let hole = [[0.0, 0.0], [2.0, 0.0], [1.0, 1.0]];
+        let got = depths(&[&outer, &hole], Nesting::Auto, false);
+        assert_eq!(got, Ok(vec![Some((0, false)), Some((1, true))]));
+    }
+
+    #[test]
+    fn many_small_rings_and_the_grid_agree() {
+        // a row of nested squares: few enough for the direct count, then as many again
+        // (past `DIRECT_WORK`) for the grid
+        for count in [3, 40] {
+            let squares: Vec<Vec<[f64; 2]>> = (0..count)
+                .map(|k| {
+                    let k = k as f64;
+                    square(k, k, 4.0 * count as f64 - 2.0 * k, k as usize % 2 == 0)
+                })
+                .collect();
+            let refs: Vec<&[[f64; 2]]> = squares.iter().map(|s| &s[..]).collect();
+            let got = depths(&refs, Nesting::Auto, false).expect("valid");
+            for (k, d) in got.into_iter().enumerate() {
+                assert_eq!(d, Some((k as u32, k % 2 == 1)), "ring {k} of {count}");
+            }
+        }
     }
 }

@@ -618,6 +618,49 @@ mod tests {
     use super::*;
     use crate::testing::random;
 
+    /// Nests `rings` and joins them; the number of holes, and the live rings' lengths.
+    fn joined(rings: &[&[[f64; 2]]]) -> (usize, Vec<u32>) {
+        let mut vertices = Vec::new();
+        let mut starts = Vec::new();
+        for ring in rings {
+            starts.push(vertices.len());
+            vertices.extend_from_slice(ring);
+        }
+        let (mut cx, mut st) = crate::testing::nested(&vertices, &starts, false);
+        let holes = join(&mut cx, &mut st.touch);
+        assert_eq!(refuse_rings_winding_twice(&mut cx, &mut st.touch), Ok(()));
+        let mut lens: Vec<u32> = cx.rings.iter().filter(|r| r.alive).map(|r| r.len).collect();
+        lens.sort_unstable();
+        // every live ring is a closed list again, its nodes numbered with it
+        for (r, ring) in cx.rings.iter().enumerate().filter(|(_, r)| r.alive) {
+            let nodes: Vec<_> = cx.pool.ring(ring.start).collect();
+            assert_eq!(nodes.len(), ring.len as usize);
+            assert!(nodes.iter().all(|&n| cx.pool.get(n).ring as usize == r));
+        }
+        (holes, lens)
+    }
+
+    #[test]
+    fn holes_touching_at_a_vertex_become_one_boundary() {
+        let outer = [[0.0, 0.0], [8.0, 0.0], [8.0, 8.0], [0.0, 8.0]];
+        let left = [[4.0, 4.0], [2.0, 5.0], [2.0, 3.0]];
+        let right = [[4.0, 4.0], [6.0, 3.0], [6.0, 5.0]];
+        // the two holes meet at (4, 4): one hole boundary visiting it twice
+        assert_eq!(joined(&[&outer, &left, &right]), (1, vec![4, 6]));
+        // apart, they stay two holes
+        let right_apart = [[5.0, 4.0], [6.0, 3.0], [6.0, 5.0]];
+        assert_eq!(joined(&[&outer, &left, &right_apart]), (2, vec![3, 3, 4]));
+    }
+
+    #[test]
+    fn a_hole_touching_its_outer_ring_joins_it() {
+        // the hole's corner lies on the outer ring's corner: the outer boundary now runs
+        // round the hole through that corner (a zero-length bridge)
+        let outer = [[0.0, 0.0], [8.0, 0.0], [8.0, 8.0], [0.0, 8.0]];
+        let hole = [[0.0, 0.0], [3.0, 1.0], [1.0, 3.0]];
+        assert_eq!(joined(&[&outer, &hole]), (0, vec![7]));
+    }
+
     /// Petals round the origin, between directions picked from a small integer grid (so
     /// that some edges leave the origin in one direction, with different lengths), dealt
     /// out to a few rings, each passing the origin once per petal; every ring given either

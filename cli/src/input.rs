@@ -178,7 +178,7 @@ fn json_kind(value: &Value) -> &'static str {
     }
 }
 
-/// Drops a repeated closing point: DESIGN.md's result vertices are the file's points with
+/// Drops a repeated closing point: the result JSON's vertices are the file's points with
 /// that one removed, and a ring of one point stays as it is.
 fn push_ring(polygon: &mut Polygon, mut ring: Ring) {
     if ring.len() > 1 && ring.first() == ring.last() {

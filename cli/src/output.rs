@@ -1,4 +1,4 @@
-//! Writing a triangulation: result JSON (DESIGN.md, "Formats") or an SVG picture.
+//! Writing a triangulation: result JSON (`{"vertices": …, "triangles": …}`, as the README describes) or an SVG picture.
 
 use std::io::{self, Write};
 
@@ -6,7 +6,7 @@ use serde::Serialize;
 
 use crate::layout::Layout;
 
-/// DESIGN.md's result JSON: `{"vertices": [[x, y], …], "triangles": [[a, b, c], …]}`.
+/// The result JSON: `{"vertices": [[x, y], …], "triangles": [[a, b, c], …]}`.
 #[derive(Serialize)]
 struct ResultJson<'a> {
     vertices: &'a [[f64; 2]],

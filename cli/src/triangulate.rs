@@ -64,7 +64,7 @@ pub struct Args {
 /// What to write.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum OutputFormat {
-    /// The result JSON of DESIGN.md.
+    /// The result JSON (the README's "The command line").
     Json,
     /// A picture of the triangles and the input rings.
     Svg,

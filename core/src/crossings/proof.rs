@@ -11,7 +11,7 @@
 //!
 //! The same scans find the crossing edges of lenient input ([`mark_crossed`]).
 
-use crate::geom::{orient2d, segments_meet, Orientation};
+use crate::geom::{boxed_segments_meet, orient2d, Orientation};
 use crate::structures::{scale, shape};
 use crate::structures::{NodeId, Pool};
 
@@ -625,7 +625,7 @@ fn meet(pool: &Pool, e: &EdgeBox, f: &EdgeBox, turns_proper: bool) -> bool {
     if f.to == e.from {
         return orient2d(c, d, b) == Orientation::Collinear;
     }
-    segments_meet(a, b, c, d)
+    boxed_segments_meet(a, b, c, d)
 }
 
 #[cfg(test)]

@@ -10,4 +10,4 @@ mod segments;
 pub use coord::Coord;
 pub(crate) use corners::{corner_contains, on_ray, same_ray};
 pub(crate) use predicates::*;
-pub(crate) use segments::{compare_hits, crosses, overlaps, segments_meet};
+pub(crate) use segments::{boxed_segments_meet, compare_hits, crosses, overlaps, segments_meet};

@@ -30,26 +30,26 @@ fn boxes_apart(a: Point, b: Point, c: Point, d: Point) -> bool {
 /// Whether closed segments a–b and c–d have a point in common.
 #[inline]
 pub(crate) fn segments_meet(a: Point, b: Point, c: Point, d: Point) -> bool {
-    use Orientation::*;
-    if boxes_apart(a, b, c, d) {
-        return false;
-    }
+    !boxes_apart(a, b, c, d) && boxed_segments_meet(a, b, c, d)
+}
+
+/// [`segments_meet`] for segments whose bounding boxes are known to overlap (the input
+/// check's candidates): the same answer without comparing the boxes again.
+#[inline]
+pub(crate) fn boxed_segments_meet(a: Point, b: Point, c: Point, d: Point) -> bool {
+    use Orientation::Collinear;
     let (o1, o2) = (orient2d(a, b, c), orient2d(a, b, d));
     let (o3, o4) = (orient2d(c, d, a), orient2d(c, d, b));
-    if o1 != o2
-        && o3 != o4
-        && o1 != Collinear
-        && o2 != Collinear
-        && o3 != Collinear
-        && o4 != Collinear
-    {
-        return true;
+    if o1 != Collinear && o1 == o2 || o3 != Collinear && o3 == o4 {
+        return false; // one segment lies strictly on one side of the other's line
+    }
+    if o1 != Collinear && o2 != Collinear && o3 != Collinear && o4 != Collinear {
+        return true; // a proper crossing
     }
     (o1 == Collinear && within_box(a, b, c))
         || (o2 == Collinear && within_box(a, b, d))
         || (o3 == Collinear && within_box(c, d, a))
         || (o4 == Collinear && within_box(c, d, b))
-        || (o1 != Collinear && o2 != Collinear && o1 != o2 && o3 != o4)
 }
 
 /// For segments sharing an endpoint: whether they run along each other for a while.

@@ -5,13 +5,56 @@
 //! current thread while counting is switched on, so the test harness's own threads do not
 //! disturb the count.
 
-mod common;
-
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
+use std::path::Path;
 
-use common::{flatten, read_json, rings_from_json, shapes_from_json, to_f32, Flat, Rings};
 use polytri::{Nesting, Options, Strategy, Triangulator};
+use serde_json::Value;
+
+type Rings = Vec<Vec<[f64; 2]>>;
+
+/// Rings as the triangulator takes them: every point in one list, and each ring's start.
+struct Flat {
+    vertices: Vec<[f64; 2]>,
+    ring_starts: Vec<usize>,
+}
+
+/// Concatenates rings; empty rings are left out (ring starts must increase).
+fn flatten(rings: &[Vec<[f64; 2]>]) -> Flat {
+    let mut ring_starts = Vec::new();
+    let mut vertices = Vec::new();
+    for ring in rings.iter().filter(|r| !r.is_empty()) {
+        ring_starts.push(vertices.len());
+        vertices.extend_from_slice(ring);
+    }
+    Flat {
+        vertices,
+        ring_starts,
+    }
+}
+
+/// A JSON file of the corpus (`corpus/<relative>`).
+fn read_json(relative: &str) -> Value {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../corpus")
+        .join(relative);
+    let text = std::fs::read_to_string(&path)
+        .unwrap_or_else(|e| panic!("cannot read {}: {e}", path.display()));
+    serde_json::from_str(&text).unwrap_or_else(|e| panic!("bad JSON in {}: {e}", path.display()))
+}
+
+/// Rings JSON: `[[[x, y], …], …]`.
+fn rings_json(value: &Value) -> Rings {
+    serde_json::from_value(value.clone()).expect("rings JSON")
+}
+
+fn to_f32(vertices: &[[f64; 2]]) -> Vec<[f32; 2]> {
+    vertices
+        .iter()
+        .map(|&[x, y]| [x as f32, y as f32])
+        .collect()
+}
 
 struct Counting;
 
@@ -63,7 +106,8 @@ fn allocations<R>(f: impl FnOnce() -> R) -> (usize, R) {
 
 fn inputs() -> Vec<(String, Flat, Nesting)> {
     let mut v = Vec::new();
-    let shapes = shapes_from_json(&read_json("datasets/rect_circles.json"));
+    let shapes: Vec<Rings> =
+        serde_json::from_value(read_json("datasets/rect_circles.json")).expect("shapes JSON");
     let all: Rings = shapes.into_iter().flatten().collect();
     v.push(("rect_circles".to_string(), flatten(&all), Nesting::Auto));
     for name in [
@@ -74,7 +118,7 @@ fn inputs() -> Vec<(String, Flat, Nesting)> {
         "issue83",
         "steiner",
     ] {
-        let rings = rings_from_json(&read_json(&format!("earcut/fixtures/{name}.json")));
+        let rings = rings_json(&read_json(&format!("earcut/fixtures/{name}.json")));
         v.push((name.to_string(), flatten(&rings), Nesting::FirstIsOuter));
     }
     // weakly simple rings: cracks, walls and segments walked several times (touch's
@@ -85,7 +129,7 @@ fn inputs() -> Vec<(String, Flat, Nesting)> {
         "spiral_walking_segments_three_times",
         "two_lobes_joined_by_a_wall_at_the_rightmost_vertex",
     ] {
-        let rings = rings_from_json(&read_json(&format!("cases/{name}.json"))["rings"]);
+        let rings = rings_json(&read_json(&format!("cases/{name}.json"))["rings"]);
         v.push((name.to_string(), flatten(&rings), Nesting::Auto));
     }
     // two figure eights sharing a lobe (raw_rings seed 41): lenient mode cuts both into

@@ -106,8 +106,8 @@ pub struct Verdict {
     pub triangles: usize,
     /// The number any triangulation of the input over the same vertices has (valid inputs).
     pub expected_triangles: Option<usize>,
-    /// earcut's `|area(polygon) − Σ area(triangles)| / area(polygon)`, by geo's areas (0 when
-    /// both are 0, 1 when only the polygon's is).
+    /// earcut's `|area(polygon) − Σ area(triangles)| / area(polygon)` of geo's areas, by
+    /// [`polytri::deviation`] (0 when both are 0, 1 when only the polygon's is).
     pub deviation: f64,
     /// The smallest triangle angle in degrees.
     pub min_angle_deg: f64,
@@ -273,7 +273,7 @@ fn judge_geometry(
     let rings = geo::GeoRings::new(input, region);
     let polygon_area = rings.area();
     let triangle_area = geo::triangle_area(pts, &mesh.tris);
-    verdict.deviation = geo::deviation(polygon_area, triangle_area);
+    verdict.deviation = polytri::deviation(polygon_area, triangle_area);
     if !verdict.input_valid {
         return;
     }

@@ -5,6 +5,10 @@
 //! judges. Every decision is exact for finite coordinates whose products neither overflow
 //! nor underflow; [`MAX_COORDINATE`] and [`MIN_COORDINATE`] bound what the input check
 //! accepts so that this holds.
+//!
+//! The predicates on points and segments ([`orient`], [`strictly_inside_segment`],
+//! [`cross_properly`]) are public, so that a test needing geometry beside a verdict asks
+//! the judge's own instead of keeping another copy of exact arithmetic.
 
 use std::cmp::Ordering;
 
@@ -22,7 +26,7 @@ pub(crate) type P = [f64; 2];
 
 /// The sign of the orientation of `a b c`: `Greater` counter-clockwise (y up), `Less`
 /// clockwise, `Equal` collinear. Exact (adaptive precision in `robust`).
-pub(crate) fn orient(a: P, b: P, c: P) -> Ordering {
+pub fn orient(a: P, b: P, c: P) -> Ordering {
     let det = robust::orient2d(
         robust::Coord { x: a[0], y: a[1] },
         robust::Coord { x: b[0], y: b[1] },
@@ -41,7 +45,7 @@ pub(crate) fn on_closed_segment(a: P, b: P, p: P) -> bool {
 }
 
 /// `p` lies in the relative interior of segment `a b` (exact; `false` when `a == b`).
-pub(crate) fn strictly_inside_segment(a: P, b: P, p: P) -> bool {
+pub fn strictly_inside_segment(a: P, b: P, p: P) -> bool {
     if p == a || p == b || a == b {
         return false;
     }
@@ -49,7 +53,7 @@ pub(crate) fn strictly_inside_segment(a: P, b: P, p: P) -> bool {
 }
 
 /// The interiors of segments `a b` and `c d` cross at a single point (exact).
-pub(crate) fn cross_properly(a: P, b: P, c: P, d: P) -> bool {
+pub fn cross_properly(a: P, b: P, c: P, d: P) -> bool {
     let opposite = |x: Ordering, y: Ordering| x != Ordering::Equal && x == y.reverse();
     opposite(orient(a, b, c), orient(a, b, d)) && opposite(orient(c, d, a), orient(c, d, b))
 }
@@ -375,10 +379,16 @@ mod tests {
         e.add(-1e100);
         assert_eq!(e.value(), 1.0);
         assert_eq!(e.sign(), Ordering::Greater);
+        e.add(-1.0);
+        assert_eq!(e.sign(), Ordering::Equal);
         let mut f = Exact::default();
         f.add_product(0.1, 0.1);
         f.add_product(-0.1, 0.1);
         assert_eq!(f.sign(), Ordering::Equal);
+        // The exact product is not the rounded one: their difference is kept.
+        f.add_product(0.1, 0.1);
+        f.add(-(0.1 * 0.1));
+        assert_ne!(f.sign(), Ordering::Equal);
     }
 
     #[test]

@@ -7,6 +7,8 @@
 //! - [`input`]: what is triangulated — rings, ring starts and the nesting convention.
 //! - `check`: the verdict on a triangulation (exact validity, geo's area and containment,
 //!   spade's constrained Delaunay triangulation, quality metrics).
+//! - `exact`: the oracle's exact predicates (orientation, points on and crossings of
+//!   segments), public for tests that need geometry beside a verdict.
 //! - `gen`: seeded generators of valid nested polygons, one per named family.
 //! - `strategy`: proptest strategies over the generators, shrinking to smaller valid inputs.
 //! - `peers`: earcut, earcutr, i_triangle, lyon and spade on the same inputs.
@@ -29,7 +31,7 @@
 pub mod campaign;
 mod cdt;
 pub mod check;
-mod exact;
+pub mod exact;
 pub mod fuzz;
 pub mod gen;
 mod grid;

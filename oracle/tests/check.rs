@@ -1,5 +1,5 @@
-//! The oracle's `check` on polytri's own results: accepted when right, and rejected with
-//! the right check's name when broken on purpose.
+//! The oracle's `check` on polytri's own results and on triangulations made by hand:
+//! accepted when right, and rejected with the right check's name when broken on purpose.
 
 use std::path::PathBuf;
 use std::time::Instant;
@@ -97,6 +97,18 @@ fn accepted_inputs() -> Vec<(&'static str, Input)> {
                     // Touches the outer ring at its corner (0, 0) and the first hole at
                     // its corner (2, 2); the first two holes share an edge.
                     vec![[0.0, 0.0], [2.0, 1.0], [2.0, 2.0], [1.0, 2.0]],
+                ],
+                Nesting::FirstIsOuter,
+            ),
+        ),
+        (
+            // The hole's edge (3, 0)–(1, 0) runs along part of the outer ring's bottom edge:
+            // collinear edges overlapping along a segment are allowed.
+            "hole along the outer ring's edge",
+            Input::from_rings(
+                &[
+                    square(0.0, 0.0, 4.0),
+                    vec![[1.0, 0.0], [2.0, 1.0], [3.0, 0.0]],
                 ],
                 Nesting::FirstIsOuter,
             ),
@@ -326,4 +338,214 @@ fn zero_width_spikes_may_be_crossed() {
     // Still a triangulation of the square: half of it is not.
     let verdict = check(&input, &[[0, 1, 6]]);
     assert!(!verdict.valid);
+}
+
+/// A 10×10 square with a 4×4 hole given clockwise — vertices 4 (3, 3), 5 (3, 7), 6 (7, 7),
+/// 7 (7, 3) — and a triangulation of it made by hand: 8 triangles, area 84.
+fn hand_made_frame() -> (Vec<Vec<[f64; 2]>>, Vec<[u32; 3]>) {
+    let rings = vec![
+        square(0.0, 0.0, 10.0),
+        vec![[3.0, 3.0], [3.0, 7.0], [7.0, 7.0], [7.0, 3.0]],
+    ];
+    let triangles = vec![
+        [0, 1, 7],
+        [0, 7, 4],
+        [1, 2, 6],
+        [1, 6, 7],
+        [2, 3, 5],
+        [2, 5, 6],
+        [3, 0, 4],
+        [3, 4, 5],
+    ];
+    (rings, triangles)
+}
+
+#[test]
+fn accepts_a_hand_made_frame_in_every_nesting_convention() {
+    let (rings, triangles) = hand_made_frame();
+    for nesting in [
+        Nesting::Auto,
+        Nesting::FirstIsOuter,
+        Nesting::Roles(vec![Role::Outer, Role::Hole]),
+    ] {
+        let what = format!("{nesting:?}");
+        let verdict = check(&Input::from_rings(&rings, nesting), &triangles);
+        assert!(verdict.valid, "{what}: {:?}", verdict.failures());
+        assert_eq!(verdict.triangles, 8, "{what}");
+        assert_eq!(verdict.expected_triangles, Some(8), "{what}");
+        assert_eq!(verdict.deviation, 0.0, "{what}");
+        assert!(
+            verdict.min_angle_deg > 0.0 && verdict.min_angle_deg <= 60.0,
+            "{what}: {}",
+            verdict.min_angle_deg
+        );
+        assert_eq!(verdict.cdt.map(|c| c.area), Some(84.0), "{what}");
+    }
+}
+
+#[test]
+fn rejects_a_degenerate_triangle() {
+    let (rings, mut triangles) = hand_made_frame();
+    let input = Input::from_rings(&rings, Nesting::FirstIsOuter);
+    triangles.push([0, 1, 1]);
+    assert_rejected("degenerate", &input, &triangles, &["orientation"]);
+    let verdict = check_with(&input, &triangles, &CheckOptions::fast());
+    let detail = verdict.check("orientation").and_then(|c| c.detail.clone());
+    assert!(
+        detail.as_deref().is_some_and(|d| d.contains("zero area")),
+        "{detail:?}"
+    );
+}
+
+/// Moving an input vertex moves the polygon: the hole's corner (7, 3) moved within the
+/// star of its triangles keeps the triangulation valid; moved outside the outer ring, it
+/// makes the input invalid.
+#[test]
+fn moving_an_input_vertex_moves_the_polygon() {
+    let (rings, triangles) = hand_made_frame();
+    let mut input = Input::from_rings(&rings, Nesting::FirstIsOuter);
+    input.vertices[7] = [8.0, 2.0];
+    let verdict = check(&input, &triangles);
+    assert!(verdict.valid, "{:?}", verdict.failures());
+    input.vertices[7] = [11.0, 5.0];
+    let verdict = check(&input, &triangles);
+    assert!(!verdict.valid && !verdict.input_valid);
+}
+
+#[test]
+fn rejects_triangles_over_a_reflex_notch() {
+    // An arrow: the notch at vertex 3 is reflex.
+    let arrow = Input::from_rings(
+        &[vec![
+            [0.0, 0.0],
+            [4.0, 0.0],
+            [4.0, 4.0],
+            [2.0, 1.0],
+            [0.0, 4.0],
+        ]],
+        Nesting::Auto,
+    );
+    let verdict = check(&arrow, &[[0, 1, 3], [1, 2, 3], [0, 3, 4]]);
+    assert!(verdict.valid, "{:?}", verdict.failures());
+    // Two triangles covering the notch, which lies outside the polygon.
+    let over = [[0, 1, 2], [0, 2, 4]];
+    assert_rejected("over the notch", &arrow, &over, &["edges", "containment"]);
+}
+
+#[test]
+fn accepts_either_index_of_a_repeated_point_and_dropped_collinear_vertices() {
+    // (2, 0) lies on the bottom edge and (4, 4) is repeated; neither need be used.
+    let square = Input::from_rings(
+        &[vec![
+            [0.0, 0.0],
+            [2.0, 0.0],
+            [4.0, 0.0],
+            [4.0, 4.0],
+            [4.0, 4.0],
+            [0.0, 4.0],
+        ]],
+        Nesting::Auto,
+    );
+    for (what, triangles) in [
+        ("collinear vertex dropped", vec![[0, 2, 3], [0, 3, 5]]),
+        ("the repeat's other index", vec![[0, 2, 4], [0, 3, 5]]),
+        (
+            "collinear vertex kept",
+            vec![[0, 1, 5], [1, 2, 3], [1, 3, 5]],
+        ),
+    ] {
+        let verdict = check(&square, &triangles);
+        assert!(verdict.valid, "{what}: {:?}", verdict.failures());
+    }
+}
+
+#[test]
+fn accepts_a_hole_touching_the_outer_ring_with_either_index() {
+    // A triangular hole whose corner is the outer ring's corner (4, 0), given as a vertex
+    // of its own (4): six positions, one hole touching the outer ring, 5 triangles.
+    let input = Input::from_rings(
+        &[
+            square(0.0, 0.0, 4.0),
+            vec![[4.0, 0.0], [2.0, 1.0], [3.0, 2.0]],
+        ],
+        Nesting::FirstIsOuter,
+    );
+    for triangles in [
+        [[0, 1, 5], [0, 5, 3], [5, 6, 3], [6, 2, 3], [6, 1, 2]],
+        [[0, 4, 5], [0, 5, 3], [5, 6, 3], [6, 2, 3], [6, 4, 2]],
+    ] {
+        let verdict = check(&input, &triangles);
+        assert!(verdict.valid, "{triangles:?}: {:?}", verdict.failures());
+        assert_eq!(verdict.expected_triangles, Some(5));
+    }
+}
+
+/// An island in a hole is an outer ring by its depth: the polygon has area
+/// 100 − 36 + 4 = 68, and leaving the island out leaves a gap.
+#[test]
+fn an_island_in_a_hole_is_outer_by_depth() {
+    let rings = [
+        square(0.0, 0.0, 10.0),
+        square(2.0, 2.0, 6.0),
+        square(4.0, 4.0, 2.0),
+    ];
+    let triangles = [
+        // the frame between the outer ring and the hole
+        [0, 1, 5],
+        [0, 5, 4],
+        [1, 2, 6],
+        [1, 6, 5],
+        [2, 3, 7],
+        [2, 7, 6],
+        [3, 0, 4],
+        [3, 4, 7],
+        // the island
+        [8, 9, 10],
+        [8, 10, 11],
+    ];
+    let input = Input::from_rings(&rings, Nesting::Auto);
+    let verdict = check(&input, &triangles);
+    assert!(verdict.valid, "{:?}", verdict.failures());
+    assert_eq!(verdict.cdt.map(|c| c.area), Some(68.0));
+    assert_rejected(
+        "island left out",
+        &input,
+        &triangles[..8],
+        &["boundary", "area"],
+    );
+    // Declared a hole, the island contradicts its depth.
+    let misdeclared = Input::from_rings(
+        &rings,
+        Nesting::Roles(vec![Role::Outer, Role::Hole, Role::Hole]),
+    );
+    assert!(!check(&misdeclared, &triangles).input_valid);
+}
+
+#[test]
+fn is_exact_for_non_integer_coordinates() {
+    // A fan over a convex heptagon with decimal coordinates: the exact area identity holds.
+    let ring: Vec<[f64; 2]> = (0..7)
+        .map(|k| {
+            let a = k as f64 * std::f64::consts::TAU / 7.0;
+            [0.1 + 3.3 * a.cos(), 0.7 + 2.9 * a.sin()]
+        })
+        .collect();
+    let fan: Vec<[u32; 3]> = (1..6).map(|k| [0, k, k + 1]).collect();
+    let verdict = check(&Input::from_rings(&[ring], Nesting::Auto), &fan);
+    assert!(verdict.valid, "{:?}", verdict.failures());
+}
+
+/// The verdict's deviation is earcut's measure (`polytri::deviation`): the share of the
+/// polygon's area the triangles miss, and 0 where polygon and triangles have no area.
+#[test]
+fn deviation_is_earcuts_measure() {
+    let (rings, triangles) = hand_made_frame();
+    let input = Input::from_rings(&rings, Nesting::FirstIsOuter);
+    // Triangle 0, (0, 0) (10, 0) (7, 3), has area 15 of the 84.
+    let verdict = check_with(&input, &triangles[1..], &CheckOptions::fast());
+    assert_eq!(verdict.deviation, 15.0 / 84.0);
+    let collinear = Input::from_rings(&[vec![[0.0, 0.0], [1.0, 1.0], [2.0, 2.0]]], Nesting::Auto);
+    assert_eq!(check(&collinear, &[]).deviation, 0.0);
+    let flat = Input::from_rings(&[vec![[0.0, 0.0], [1.0, 0.0], [0.0, 0.0]]], Nesting::Auto);
+    assert_eq!(check(&flat, &[[0, 1, 2]]).deviation, 0.0);
 }

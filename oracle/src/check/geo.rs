@@ -95,23 +95,6 @@ pub(crate) fn triangle_area(pts: &[[f64; 2]], tris: &[(usize, [u32; 3])]) -> f64
         .sum()
 }
 
-/// earcut's deviation: |area(polygon) − Σ area(triangles)| / area(polygon), 0 when both are
-/// 0, and 1 when only the polygon's is (JSON has no infinity).
-pub(crate) fn deviation(polygon: f64, triangles: f64) -> f64 {
-    let d = if polygon == 0.0 && triangles == 0.0 {
-        0.0
-    } else if polygon == 0.0 {
-        1.0
-    } else {
-        ((polygon - triangles) / polygon).abs()
-    };
-    if d.is_finite() {
-        d
-    } else {
-        1.0
-    }
-}
-
 /// The deviation is within floating-point noise: relative 1e-9, plus what rounding the
 /// shoelace terms of coordinates of magnitude `scale` can do.
 pub(crate) fn area_check(polygon: f64, triangles: f64, terms: usize, scale: f64) -> Check {

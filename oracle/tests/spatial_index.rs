@@ -2,14 +2,18 @@
 //! many holes (ear tests ask the reflex grid, ray casts walk the edge grid), islands in
 //! holes (depths read off the nearest edge), reflex vertices on one line and extents that
 //! overflow `f64` (the grids degenerate to one row or column). Every result goes through
-//! the exact checker and the triangle count `n − 2·polygons + 2·holes`.
+//! the oracle's exact checks and the triangle count `n − 2·polygons + 2·holes`.
 
 mod common;
 
-use common::{check, check_with_roles, first_is_outer, flatten, rotate, to_f32, widen, Rings};
+use common::triangulate;
 use polytri::{Options, Strategy, Triangulator};
+use polytri_oracle::replay::{rotate, Precision, ROTATIONS};
+use polytri_oracle::{check_with, CheckOptions, Input, Nesting};
 
 const STRATEGIES: [Strategy; 2] = [Strategy::Fast, Strategy::Quality];
+
+type Rings = Vec<Vec<[f64; 2]>>;
 
 /// A `cols` × `rows` grid of `sides`-gon holes in a rectangle, jittered by a seeded
 /// xorshift inside their cells so that no two meet.
@@ -46,42 +50,36 @@ fn holes_grid(cols: usize, rows: usize, sides: usize, seed: u64) -> Rings {
     rings
 }
 
-/// Triangulates in f64 and f32 with both strategies; checks every result exactly.
-fn check_all(rings: &Rings, polygons: usize, holes: usize, tag: &str) {
-    let flat = flatten(rings);
-    let roles = first_is_outer(flat.rings.len());
-    let want = flat.vertices.len() - 2 * polygons + 2 * holes;
+/// Triangulates in f64 and f32 with both strategies (automatic nesting); the oracle judges
+/// every result with the first ring outer and the rest holes.
+fn check_all(input: &Input, polygons: usize, holes: usize, tag: &str) {
+    let want = input.vertices.len() - 2 * polygons + 2 * holes;
     for strategy in STRATEGIES {
         let opts = Options::default().with_strategy(strategy);
-        let mut out = Vec::new();
-        let mut tri = Triangulator::<f64>::new();
-        tri.triangulate(&flat.vertices, &flat.ring_starts, &opts, &mut out)
-            .unwrap_or_else(|e| panic!("{tag} {strategy:?} f64: {e}"));
-        check_with_roles(&flat.vertices, &flat.rings, &roles, &out)
-            .unwrap_or_else(|e| panic!("{tag} {strategy:?} f64: {e}"));
-        assert_eq!(out.len(), want, "{tag} {strategy:?} f64");
+        for precision in Precision::ALL {
+            let tag = format!("{tag} {strategy:?} {precision}");
+            let run = triangulate(input, &opts, precision).unwrap_or_else(|e| panic!("{tag}: {e}"));
+            let seen = common::seen(input, precision);
+            let verdict = check_with(&seen, &run.triangles, &CheckOptions::fast());
+            assert!(verdict.valid, "{tag}: {:?}", verdict.failures());
+            assert_eq!(run.triangles.len(), want, "{tag}");
+        }
+    }
+}
 
-        let v32 = to_f32(&flat.vertices);
-        let mut tri = Triangulator::<f32>::new();
-        tri.triangulate(&v32, &flat.ring_starts, &opts, &mut out)
-            .unwrap_or_else(|e| panic!("{tag} {strategy:?} f32: {e}"));
-        check_with_roles(&widen(&v32), &flat.rings, &roles, &out)
-            .unwrap_or_else(|e| panic!("{tag} {strategy:?} f32: {e}"));
-        assert_eq!(out.len(), want, "{tag} {strategy:?} f32");
+/// `rings`, first ring outer, in every exact rotation through [`check_all`].
+fn check_rotations(rings: &[Vec<[f64; 2]>], polygons: usize, holes: usize) {
+    let input = Input::from_rings(rings, Nesting::FirstIsOuter);
+    for rotation in ROTATIONS {
+        let tag = format!("rotation {rotation}");
+        check_all(&rotate(&input, rotation), polygons, holes, &tag);
     }
 }
 
 #[test]
 fn many_circular_holes_in_every_rotation() {
     let rings = holes_grid(14, 9, 20, 0x5eed_0001);
-    for k in 0..4 {
-        check_all(
-            &rotate(&rings, k),
-            1,
-            rings.len() - 1,
-            &format!("rotation {k}"),
-        );
-    }
+    check_rotations(&rings, 1, rings.len() - 1);
 }
 
 #[test]
@@ -94,14 +92,7 @@ fn many_square_holes_share_rows_and_columns() {
             rings.push(vec![[x, y], [x, y + 4.0], [x + 4.0, y + 4.0], [x + 4.0, y]]);
         }
     }
-    for k in 0..4 {
-        check_all(
-            &rotate(&rings, k),
-            1,
-            rings.len() - 1,
-            &format!("rotation {k}"),
-        );
-    }
+    check_rotations(&rings, 1, rings.len() - 1);
 }
 
 #[test]
@@ -116,22 +107,24 @@ fn islands_in_holes_nest_by_the_nearest_edge() {
             rings.push(vec![[a, c], [b, c], [b, e], [a, e]]);
         }
     }
-    let flat = flatten(&rings);
+    // Judged with roles by containment depth, what automatic nesting promises.
+    let input = Input::from_rings(&rings, Nesting::Auto);
     let (polygons, holes) = (60, 60);
-    let want = flat.vertices.len() - 2 * polygons + 2 * holes;
-    for k in 0..4 {
-        let flat = flatten(&rotate(&rings, k));
+    let want = input.vertices.len() - 2 * polygons + 2 * holes;
+    for rotation in ROTATIONS {
+        let input = rotate(&input, rotation);
         for strategy in STRATEGIES {
+            let tag = format!("rotation {rotation} {strategy:?}");
             let opts = Options::default().with_strategy(strategy);
             let mut out = Vec::new();
             let report = Triangulator::<f64>::new()
-                .triangulate(&flat.vertices, &flat.ring_starts, &opts, &mut out)
+                .triangulate(&input.vertices, &input.ring_starts, &opts, &mut out)
                 .map(|r| (r.polygons, r.holes))
-                .unwrap_or_else(|e| panic!("rotation {k} {strategy:?}: {e}"));
-            assert_eq!(report, (polygons, holes), "rotation {k} {strategy:?}");
-            check(&flat.vertices, &flat.rings, &out)
-                .unwrap_or_else(|e| panic!("rotation {k} {strategy:?}: {e}"));
-            assert_eq!(out.len(), want, "rotation {k} {strategy:?}");
+                .unwrap_or_else(|e| panic!("{tag}: {e}"));
+            assert_eq!(report, (polygons, holes), "{tag}");
+            let verdict = check_with(&input, &out, &CheckOptions::fast());
+            assert!(verdict.valid, "{tag}: {:?}", verdict.failures());
+            assert_eq!(out.len(), want, "{tag}");
         }
     }
 }
@@ -146,9 +139,7 @@ fn comb_with_reflex_vertices_on_one_line() {
         ring.extend([[x + 2.0, 0.0], [x + 1.0, 8.0]]);
     }
     ring.push([0.0, 0.0]);
-    for k in 0..4 {
-        check_all(&rotate(&[ring.clone()], k), 1, 0, &format!("rotation {k}"));
-    }
+    check_rotations(&[ring], 1, 0);
 }
 
 #[test]
@@ -176,14 +167,7 @@ fn long_teeth_with_holes() {
             ]);
         }
     }
-    for k in 0..4 {
-        check_all(
-            &rotate(&rings, k),
-            1,
-            rings.len() - 1,
-            &format!("rotation {k}"),
-        );
-    }
+    check_rotations(&rings, 1, rings.len() - 1);
 }
 
 #[test]
@@ -201,7 +185,8 @@ fn huge_coordinates_still_triangulate() {
                 .collect()
         })
         .collect();
-    check_all(&huge, 1, huge.len() - 1, "huge");
+    let input = Input::from_rings(&huge, Nesting::FirstIsOuter);
+    check_all(&input, 1, huge.len() - 1, "huge");
 }
 
 #[test]
@@ -219,7 +204,7 @@ fn extents_overflowing_f64_do_not_panic() {
                 .collect()
         })
         .collect();
-    let flat = flatten(&huge);
+    let input = Input::from_rings(&huge, Nesting::Auto);
     for strategy in STRATEGIES {
         for lenient in [false, true] {
             let opts = Options::default()
@@ -227,8 +212,8 @@ fn extents_overflowing_f64_do_not_panic() {
                 .with_lenient(lenient);
             let mut out = Vec::new();
             let _ = Triangulator::<f64>::new().triangulate(
-                &flat.vertices,
-                &flat.ring_starts,
+                &input.vertices,
+                &input.ring_starts,
                 &opts,
                 &mut out,
             );

@@ -32,3 +32,28 @@ pub(crate) fn nested(vertices: &[[f64; 2]], starts: &[usize], lenient: bool) -> 
     assert!(ok.is_ok(), "nest: {ok:?}");
     (cx, st)
 }
+
+/// Rings as one vertex list and the ring starts into it.
+pub(crate) fn flatten(rings: &[&[[f64; 2]]]) -> (Vec<[f64; 2]>, Vec<usize>) {
+    let mut vertices = Vec::new();
+    let mut starts = Vec::new();
+    for ring in rings {
+        starts.push(vertices.len());
+        vertices.extend_from_slice(ring);
+    }
+    (vertices, starts)
+}
+
+/// The turn of `ring` at its rightmost vertex: its winding, once `clean` oriented it.
+pub(crate) fn turn_at_rightmost(
+    cx: &Context,
+    ring: &crate::context::Ring,
+) -> crate::geom::Orientation {
+    let n = ring.rightmost;
+    let (a, b, c) = (
+        cx.pool.p(cx.pool.prev(n)),
+        cx.pool.p(n),
+        cx.pool.p(cx.pool.next(n)),
+    );
+    crate::geom::orient2d(a, b, c)
+}

@@ -553,7 +553,7 @@ fn outermost_edge_arrives(cx: &Context, at: NodeId) -> Option<bool> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::testing::cleaned;
+    use crate::testing::{cleaned, turn_at_rightmost};
 
     /// The kept vertices of each live ring, from its least input vertex on.
     fn kept(cx: &Context) -> Vec<Vec<u32>> {
@@ -644,13 +644,8 @@ mod tests {
         ];
         let (cx, _) = cleaned(&vertices, &[0, 4], false);
         for ring in cx.rings.iter().filter(|r| r.alive) {
-            let n = ring.rightmost;
-            let (a, b, c) = (
-                cx.pool.p(cx.pool.prev(n)),
-                cx.pool.p(n),
-                cx.pool.p(cx.pool.next(n)),
-            );
-            assert_eq!(orient2d(a, b, c), Orientation::CounterClockwise);
+            assert_eq!(turn_at_rightmost(&cx, ring), Orientation::CounterClockwise);
+            let b = cx.pool.p(ring.rightmost);
             // the rightmost vertex, ties by lowest y
             assert!(cx.pool.ring(ring.start).all(|m| {
                 let q = cx.pool.p(m);

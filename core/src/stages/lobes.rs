@@ -381,12 +381,7 @@ mod tests {
     /// Loads and cleans `rings` in lenient mode; returns each live ring's positions,
     /// checking that its links and ring numbers agree.
     fn lobes(rings: &[&[[f64; 2]]]) -> Vec<Vec<[f64; 2]>> {
-        let mut vertices = Vec::new();
-        let mut starts = Vec::new();
-        for ring in rings {
-            starts.push(vertices.len());
-            vertices.extend_from_slice(ring);
-        }
+        let (vertices, starts) = crate::testing::flatten(rings);
         let (cx, _) = crate::testing::cleaned(&vertices, &starts, true);
         let mut out = Vec::new();
         for (r, ring) in cx.rings.iter().enumerate().filter(|(_, r)| r.alive) {

@@ -970,18 +970,7 @@ fn locally_inside(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::testing::cleaned;
-
-    /// Rings as (vertices, starts), each ring's points given.
-    fn rings(rings: &[&[[f64; 2]]]) -> (Vec<[f64; 2]>, Vec<usize>) {
-        let mut vertices = Vec::new();
-        let mut starts = Vec::new();
-        for ring in rings {
-            starts.push(vertices.len());
-            vertices.extend_from_slice(ring);
-        }
-        (vertices, starts)
-    }
+    use crate::testing::{cleaned, flatten, turn_at_rightmost};
 
     /// A square from (x, y) with side `s`, counter-clockwise or clockwise.
     fn square(x: f64, y: f64, s: f64, ccw: bool) -> Vec<[f64; 2]> {
@@ -999,18 +988,12 @@ mod tests {
         nesting: Nesting,
         lenient: bool,
     ) -> Result<Vec<Option<(u32, bool)>>, Error> {
-        let (vertices, starts) = rings(rings_in);
+        let (vertices, starts) = flatten(rings_in);
         let (mut cx, mut st) = cleaned(&vertices, &starts, lenient);
         nest(&mut cx, &mut st.nest, nesting)?;
         let mut out = vec![None; rings_in.len()];
         for ring in cx.rings.iter().filter(|r| r.alive) {
-            let n = ring.rightmost;
-            let (a, b, c) = (
-                cx.pool.p(cx.pool.prev(n)),
-                cx.pool.p(n),
-                cx.pool.p(cx.pool.next(n)),
-            );
-            let clockwise = orient2d(a, b, c) == Orientation::Clockwise;
+            let clockwise = turn_at_rightmost(&cx, ring) == Orientation::Clockwise;
             out[ring.input as usize] = Some((ring.depth, clockwise));
         }
         Ok(out)

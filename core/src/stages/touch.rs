@@ -620,12 +620,7 @@ mod tests {
 
     /// Nests `rings` and joins them; the number of holes, and the live rings' lengths.
     fn joined(rings: &[&[[f64; 2]]]) -> (usize, Vec<u32>) {
-        let mut vertices = Vec::new();
-        let mut starts = Vec::new();
-        for ring in rings {
-            starts.push(vertices.len());
-            vertices.extend_from_slice(ring);
-        }
+        let (vertices, starts) = crate::testing::flatten(rings);
         let (mut cx, mut st) = crate::testing::nested(&vertices, &starts, false);
         let holes = join(&mut cx, &mut st.touch);
         assert_eq!(refuse_rings_winding_twice(&mut cx, &mut st.touch), Ok(()));

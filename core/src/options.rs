@@ -25,7 +25,7 @@ pub enum Nesting {
 
 /// Options for [`Triangulator::triangulate`](crate::Triangulator::triangulate).
 ///
-/// Defaults: [`Strategy::Fast`], [`Nesting::Auto`], strict.
+/// Defaults: [`Strategy::Fast`], [`Nesting::Auto`], strict, one thread.
 ///
 /// ```
 /// use polytri::{Nesting, Options, Strategy};
@@ -35,7 +35,7 @@ pub enum Nesting {
 ///     .with_lenient(true);
 /// assert!(opts.lenient);
 /// ```
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[non_exhaustive]
 pub struct Options {
     /// Which ear to clip next. Default: [`Strategy::Fast`].
@@ -47,6 +47,10 @@ pub struct Options {
     /// `true` (lenient): skip the refusal and make the best of any input — always a result,
     /// with a [`Report`](crate::Report) of what was repaired or skipped.
     pub lenient: bool,
+    /// Threads for [`Triangulator::triangulate_many`](crate::Triangulator::triangulate_many):
+    /// 1 (default) runs on the caller's thread, 0 uses every available core. Results do not
+    /// depend on it. Without the crate's `threads` feature, every count runs on one thread.
+    pub threads: usize,
 }
 
 impl Options {
@@ -56,6 +60,7 @@ impl Options {
             strategy: Strategy::Fast,
             nesting: Nesting::Auto,
             lenient: false,
+            threads: 1,
         }
     }
 
@@ -75,5 +80,18 @@ impl Options {
     pub const fn with_lenient(mut self, lenient: bool) -> Self {
         self.lenient = lenient;
         self
+    }
+
+    /// Sets the thread count for [`Triangulator::triangulate_many`](crate::Triangulator::triangulate_many):
+    /// 1 (default) sequential, 0 every available core.
+    pub const fn with_threads(mut self, threads: usize) -> Self {
+        self.threads = threads;
+        self
+    }
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options::new()
     }
 }

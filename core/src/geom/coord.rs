@@ -4,7 +4,7 @@
 ///
 /// Coordinates are widened to `f64` when loaded, which is exact, so every predicate gives
 /// the exact answer for the coordinates the caller gave.
-pub trait Coord: Copy + sealed::Sealed {
+pub trait Coord: Copy + Send + Sync + sealed::Sealed {
     /// The value as `f64` (exact for both implementations).
     fn to_f64(self) -> f64;
 }

@@ -3,6 +3,7 @@
 //! ([`pipeline`] in order, [`lenient`] for the policy of reruns on crossing input).
 
 mod lenient;
+mod many;
 pub(crate) mod pipeline;
 
 use core::marker::PhantomData;
@@ -11,6 +12,30 @@ use crate::context::Context;
 use crate::geom::Coord;
 use crate::report::Report;
 use crate::{Error, Options};
+
+/// Everything one triangulation needs: the shared context, every stage's scratch and
+/// lenient mode's rerun state. A [`Triangulator`] has one, and one per thread of
+/// [`Triangulator::triangulate_many`].
+#[derive(Debug, Default)]
+struct Worker {
+    cx: Context,
+    stages: pipeline::Stages,
+    reruns: lenient::Reruns,
+}
+
+impl Worker {
+    /// Triangulates one input into `out`; the numbers of polygons and holes.
+    fn run<T: Coord>(
+        &mut self,
+        vertices: &[[T; 2]],
+        ring_starts: &[usize],
+        options: &Options,
+        out: &mut Vec<[u32; 3]>,
+    ) -> Result<(usize, usize), Error> {
+        let (cx, stages, reruns) = (&mut self.cx, &mut self.stages, &mut self.reruns);
+        lenient::triangulate(cx, stages, reruns, vertices, ring_starts, options, out)
+    }
+}
 
 /// Triangulates polygons with holes and islands; reuse it to avoid allocation.
 ///
@@ -33,9 +58,8 @@ use crate::{Error, Options};
 /// ```
 #[derive(Debug)]
 pub struct Triangulator<T: Coord> {
-    cx: Context,
-    stages: pipeline::Stages,
-    reruns: lenient::Reruns,
+    worker: Worker,
+    many: many::Many,
     _coord: PhantomData<fn(T)>,
 }
 
@@ -49,9 +73,8 @@ impl<T: Coord> Triangulator<T> {
     /// A triangulator with empty buffers; they grow on first use and are kept.
     pub fn new() -> Self {
         Triangulator {
-            cx: Context::default(),
-            stages: pipeline::Stages::default(),
-            reruns: lenient::Reruns::default(),
+            worker: Worker::default(),
+            many: many::Many::default(),
             _coord: PhantomData,
         }
     }
@@ -84,10 +107,10 @@ impl<T: Coord> Triangulator<T> {
         ring_starts: &[usize],
         nesting: crate::Nesting,
     ) -> Result<(), Error> {
-        let cx = &mut self.cx;
-        cx.keep_collinear = false;
-        cx.reset(false);
-        pipeline::check_input(cx, &mut self.stages, vertices, ring_starts, nesting, false)?;
+        let w = &mut self.worker;
+        w.cx.keep_collinear = false;
+        w.cx.reset(false);
+        pipeline::check_input(&mut w.cx, &mut w.stages, vertices, ring_starts, nesting, false)?;
         Ok(())
     }
 
@@ -113,16 +136,13 @@ impl<T: Coord> Triangulator<T> {
         options: &Options,
         out: &mut Vec<[u32; 3]>,
     ) -> Result<Report<'_>, Error> {
-        let cx = &mut self.cx;
-        let (stages, reruns) = (&mut self.stages, &mut self.reruns);
-        let (polygons, holes) =
-            lenient::triangulate(cx, stages, reruns, vertices, ring_starts, options, out)?;
+        let (polygons, holes) = self.worker.run(vertices, ring_starts, options, out)?;
         Ok(Report {
             triangles: out.len(),
             polygons,
             holes,
-            dropped: &cx.dropped,
-            repairs: &cx.repairs,
+            dropped: &self.worker.cx.dropped,
+            repairs: &self.worker.cx.repairs,
         })
     }
 }

@@ -1,0 +1,183 @@
+//! [`Triangulator::triangulate_many`]: many independent inputs (a page of glyphs, a layer
+//! of counties), spread over threads.
+//!
+//! Each input is triangulated exactly as [`Triangulator::triangulate`] would, by a worker
+//! that reuses its buffers; which worker takes which input does not change the result,
+//! since a worker keeps buffers between calls, never decisions. With the `threads` feature
+//! and more than one thread, rayon's work stealing balances inputs of different sizes
+//! over a pool of that many threads, each with its own worker (allocated on first use and
+//! kept).
+
+use super::{Triangulator, Worker};
+use crate::geom::Coord;
+use crate::report::{Dropped, Repair, Report};
+use crate::{Error, Options};
+
+/// One input's outcome, kept so that its [`Report`] can borrow from the triangulator.
+#[derive(Debug, Default)]
+struct Outcome {
+    /// The error, or `None` when it was triangulated.
+    error: Option<Error>,
+    polygons: usize,
+    holes: usize,
+    triangles: usize,
+    dropped: Vec<Dropped>,
+    repairs: Vec<Repair>,
+}
+
+impl Outcome {
+    /// Records what `worker` made of one input.
+    fn record(&mut self, worker: &Worker, result: Result<(usize, usize), Error>, triangles: usize) {
+        self.error = result.err();
+        (self.polygons, self.holes) = result.unwrap_or((0, 0));
+        self.triangles = triangles;
+        self.dropped.clear();
+        self.dropped.extend_from_slice(&worker.cx.dropped);
+        self.repairs.clear();
+        self.repairs.extend_from_slice(&worker.cx.repairs);
+    }
+
+    fn report(&self) -> Result<Report<'_>, Error> {
+        match self.error {
+            Some(error) => Err(error),
+            None => Ok(Report {
+                triangles: self.triangles,
+                polygons: self.polygons,
+                holes: self.holes,
+                dropped: &self.dropped,
+                repairs: &self.repairs,
+            }),
+        }
+    }
+}
+
+/// The outcomes of the last `triangulate_many` call, and the threads with their workers.
+#[derive(Debug, Default)]
+pub(super) struct Many {
+    outcomes: Vec<Outcome>,
+    #[cfg(feature = "threads")]
+    pool: Option<Pool>,
+}
+
+/// A thread pool and one worker per thread, indexed by rayon's thread index.
+#[cfg(feature = "threads")]
+#[derive(Debug)]
+struct Pool {
+    threads: rayon::ThreadPool,
+    workers: Vec<std::sync::Mutex<Worker>>,
+}
+
+/// The number of threads `options` asks for: 0 means every available core.
+fn thread_count(options: &Options) -> usize {
+    match options.threads {
+        0 => std::thread::available_parallelism().map_or(1, |n| n.get()),
+        n => n,
+    }
+}
+
+impl<T: Coord> Triangulator<T> {
+    /// Triangulates many independent inputs, each as [`Triangulator::triangulate`] would:
+    /// one entry of `out` and one result per input, in input order. With
+    /// [`Options::with_threads`] (and the crate's `threads` feature) the inputs are spread
+    /// over that many threads; the results are the same for every thread count.
+    ///
+    /// Each input is `(vertices, ring_starts)`; its triangles index its own vertices.
+    /// `out` is resized to one entry per input, keeping the entries' buffers.
+    ///
+    /// ```
+    /// # fn main() -> Result<(), polytri::Error> {
+    /// let square = [[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]];
+    /// let framed = [
+    ///     [0.0, 0.0], [9.0, 0.0], [9.0, 9.0], [0.0, 9.0],
+    ///     [3.0, 3.0], [3.0, 6.0], [6.0, 6.0], [6.0, 3.0],
+    /// ];
+    /// let bow_tie = [[0.0, 0.0], [4.0, 4.0], [4.0, 0.0], [0.0, 4.0]];
+    /// let inputs: [(&[[f64; 2]], &[usize]); 3] =
+    ///     [(&square, &[0]), (&framed, &[0, 4]), (&bow_tie, &[0])];
+    ///
+    /// let mut tri = polytri::Triangulator::<f64>::new();
+    /// let opts = polytri::Options::default().with_threads(0); // every core
+    /// let mut out = Vec::new();
+    /// let results = tri.triangulate_many(&inputs, &opts, &mut out);
+    /// assert_eq!(results[0].as_ref().map(|r| r.triangles), Ok(2));
+    /// assert_eq!(out[1].len(), 8);
+    /// assert!(matches!(results[2], Err(polytri::Error::EdgesCross { .. })));
+    /// # Ok(())
+    /// # }
+    /// ```
+    pub fn triangulate_many(
+        &mut self,
+        polygons: &[(&[[T; 2]], &[usize])],
+        options: &Options,
+        out: &mut Vec<Vec<[u32; 3]>>,
+    ) -> Vec<Result<Report<'_>, Error>> {
+        out.resize_with(polygons.len(), Vec::new);
+        let many = &mut self.many;
+        many.outcomes.resize_with(polygons.len(), Outcome::default);
+        let threads = thread_count(options);
+        let done = threads > 1 && polygons.len() > 1 && many.in_parallel(polygons, options, threads, out);
+        if !done {
+            let jobs = polygons.iter().zip(out.iter_mut()).zip(&mut many.outcomes);
+            for ((&(vertices, ring_starts), out), outcome) in jobs {
+                let result = self.worker.run(vertices, ring_starts, options, out);
+                outcome.record(&self.worker, result, out.len());
+            }
+        }
+        many.outcomes[..polygons.len()].iter().map(Outcome::report).collect()
+    }
+}
+
+impl Many {
+    /// Runs every input on a pool of `threads` threads; false without the `threads`
+    /// feature, or when no pool could be started (then the caller runs them itself).
+    #[cfg(feature = "threads")]
+    fn in_parallel<T: Coord>(
+        &mut self,
+        polygons: &[(&[[T; 2]], &[usize])],
+        options: &Options,
+        threads: usize,
+        out: &mut [Vec<[u32; 3]>],
+    ) -> bool {
+        use rayon::prelude::*;
+        if self.pool.as_ref().map(|p| p.workers.len()) != Some(threads) {
+            let Ok(pool) = rayon::ThreadPoolBuilder::new().num_threads(threads).build() else {
+                return false;
+            };
+            let workers = (0..threads).map(|_| Default::default()).collect();
+            self.pool = Some(Pool {
+                threads: pool,
+                workers,
+            });
+        }
+        let Some(pool) = &self.pool else { return false };
+        let outcomes = &mut self.outcomes[..polygons.len()];
+        pool.threads.install(|| {
+            let jobs = polygons.par_iter().zip(out.par_iter_mut()).zip(outcomes.par_iter_mut());
+            jobs.for_each(|((&(vertices, ring_starts), out), outcome)| {
+                // every job runs on a thread of this pool, which has a worker per thread
+                let k = rayon::current_thread_index().unwrap_or(0) % pool.workers.len();
+                // (a worker is only ever locked by its own thread: never contended, and
+                // never poisoned, as the pipeline does not panic)
+                let mut worker = match pool.workers[k].lock() {
+                    Ok(worker) => worker,
+                    Err(poisoned) => poisoned.into_inner(),
+                };
+                let result = worker.run(vertices, ring_starts, options, out);
+                outcome.record(&worker, result, out.len());
+            });
+        });
+        true
+    }
+
+    /// Without the `threads` feature the caller runs every input itself.
+    #[cfg(not(feature = "threads"))]
+    fn in_parallel<T: Coord>(
+        &mut self,
+        _polygons: &[(&[[T; 2]], &[usize])],
+        _options: &Options,
+        _threads: usize,
+        _out: &mut [Vec<[u32; 3]>],
+    ) -> bool {
+        false
+    }
+}

@@ -8,6 +8,7 @@
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 use std::path::Path;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 use polytri::{Nesting, Options, Strategy, Triangulator};
 use serde_json::Value;
@@ -63,6 +64,11 @@ thread_local! {
     static COUNT: Cell<usize> = const { Cell::new(0) };
 }
 
+/// Allocations on every thread while `EVERY_THREAD` is on (for the pool's threads; this
+/// binary has one test, so no other test allocates meanwhile).
+static EVERY_THREAD: AtomicBool = AtomicBool::new(false);
+static EVERY_COUNT: AtomicUsize = AtomicUsize::new(0);
+
 fn note_allocation() {
     // `try_with`: the thread-locals may be gone while a thread shuts down.
     let _ = COUNTING.try_with(|on| {
@@ -70,6 +76,9 @@ fn note_allocation() {
             let _ = COUNT.try_with(|c| c.set(c.get() + 1));
         }
     });
+    if EVERY_THREAD.load(Ordering::Relaxed) {
+        EVERY_COUNT.fetch_add(1, Ordering::Relaxed);
+    }
 }
 
 // SAFETY: every call is forwarded unchanged to `System`; the bookkeeping only touches
@@ -186,6 +195,7 @@ fn inputs() -> Vec<(String, Flat, Nesting)> {
 
 #[test]
 fn warmed_up_triangulator_does_not_allocate() {
+    warmed_up_triangulate_many_allocates_only_its_results();
     let mut failures = Vec::new();
     let mut tri64 = Triangulator::<f64>::new();
     let mut tri32 = Triangulator::<f32>::new();
@@ -255,4 +265,53 @@ fn warmed_up_triangulator_does_not_allocate() {
         failures.len(),
         failures.join("\n")
     );
+}
+
+/// `triangulate_many`, warm: one thread allocates only the returned `Vec` of results; with
+/// a pool, its workers allocate only while their buffers grow to the inputs they meet. (Called from the test above: counting
+/// the pool's threads counts every thread, so nothing else may run meanwhile.)
+fn warmed_up_triangulate_many_allocates_only_its_results() {
+    let shapes: Vec<Rings> =
+        serde_json::from_value(read_json("datasets/lorem_latin.json")).expect("shapes JSON");
+    let flats: Vec<Flat> = shapes.iter().map(|rings| flatten(rings)).collect();
+    let polygons: Vec<(&[[f64; 2]], &[usize])> = flats
+        .iter()
+        .map(|f| (&f.vertices[..], &f.ring_starts[..]))
+        .collect();
+    assert!(polygons.len() > 40);
+    let mut tri = Triangulator::<f64>::new();
+    let mut out = Vec::new();
+    let opts = Options::default().with_nesting(Nesting::FirstIsOuter);
+    tri.triangulate_many(&polygons, &opts, &mut out);
+    let (n, ok) = allocations(|| {
+        tri.triangulate_many(&polygons, &opts, &mut out)
+            .iter()
+            .all(Result::is_ok)
+    });
+    assert!(ok);
+    assert_eq!(n, 1, "one thread: the results Vec only");
+    if cfg!(feature = "threads") {
+        let opts = opts.with_threads(2);
+        // which worker takes which input varies from call to call: a few calls give each
+        // worker buffers for the largest input
+        for _ in 0..8 {
+            tri.triangulate_many(&polygons, &opts, &mut out);
+        }
+        EVERY_COUNT.store(0, Ordering::Relaxed);
+        EVERY_THREAD.store(true, Ordering::Relaxed);
+        let ok = tri
+            .triangulate_many(&polygons, &opts, &mut out)
+            .iter()
+            .all(Result::is_ok);
+        EVERY_THREAD.store(false, Ordering::Relaxed);
+        assert!(ok);
+        let n = EVERY_COUNT.load(Ordering::Relaxed);
+        // the results Vec; and rarely a worker that meets a larger input than on any call
+        // before grows a buffer once (work stealing decides who takes what)
+        assert!(
+            n <= 1 + 2 * 2,
+            "two threads: {n} allocations for {} inputs",
+            polygons.len()
+        );
+    }
 }

@@ -9,7 +9,16 @@ use polytri_oracle::{check, Input, Nesting};
 #[derive(Debug, PartialEq)]
 struct Outcome {
     triangles: Vec<[u32; 3]>,
-    result: Result<(usize, usize, usize, Vec<polytri::Dropped>, Vec<polytri::Repair>), Error>,
+    result: Result<
+        (
+            usize,
+            usize,
+            usize,
+            Vec<polytri::Dropped>,
+            Vec<polytri::Repair>,
+        ),
+        Error,
+    >,
 }
 
 /// Seeded inputs of every generator family and size, plus inputs strict mode refuses
@@ -23,7 +32,10 @@ fn inputs() -> Vec<Input> {
             inputs.push(generate(family, 7000 + seed, &Params::new(size)).input);
         }
     }
-    let bow_tie = Input::from_rings(&[vec![[0.0, 0.0], [4.0, 4.0], [4.0, 0.0], [0.0, 4.0]]], Nesting::Auto);
+    let bow_tie = Input::from_rings(
+        &[vec![[0.0, 0.0], [4.0, 4.0], [4.0, 0.0], [0.0, 4.0]]],
+        Nesting::Auto,
+    );
     let square = vec![[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]];
     let twice = Input::from_rings(&[square.clone(), square], Nesting::Auto);
     for (k, odd) in [bow_tie, twice].into_iter().enumerate() {
@@ -37,7 +49,13 @@ fn outcome(triangles: &[[u32; 3]], report: Result<polytri::Report<'_>, Error>) -
     Outcome {
         triangles: triangles.to_vec(),
         result: report.map(|r| {
-            (r.triangles, r.polygons, r.holes, r.dropped.to_vec(), r.repairs.to_vec())
+            (
+                r.triangles,
+                r.polygons,
+                r.holes,
+                r.dropped.to_vec(),
+                r.repairs.to_vec(),
+            )
         }),
     }
 }
@@ -49,12 +67,7 @@ fn one_by_one(inputs: &[Input], options: &Options) -> Vec<Outcome> {
         .map(|input| {
             let mut out = Vec::new();
             let mut tri = Triangulator::<f64>::new();
-            let report = tri.triangulate(
-                &input.vertices,
-                &input.ring_starts,
-                options,
-                &mut out,
-            );
+            let report = tri.triangulate(&input.vertices, &input.ring_starts, options, &mut out);
             outcome(&out, report)
         })
         .collect()
@@ -109,7 +122,11 @@ fn the_oracle_accepts_every_parallel_triangulation() {
     let mut tri = Triangulator::<f64>::new();
     let options = Options::default().with_threads(2);
     let mut refused = 0;
-    for (k, (input, got)) in inputs.iter().zip(many(&mut tri, &inputs, &options)).enumerate() {
+    for (k, (input, got)) in inputs
+        .iter()
+        .zip(many(&mut tri, &inputs, &options))
+        .enumerate()
+    {
         match got.result {
             Ok((triangles, ..)) => {
                 assert_eq!(triangles, got.triangles.len());
@@ -118,7 +135,10 @@ fn the_oracle_accepts_every_parallel_triangulation() {
             }
             Err(e) => {
                 refused += 1;
-                assert!(!check(input, &[]).input_valid, "input {k} is valid, refused: {e}");
+                assert!(
+                    !check(input, &[]).input_valid,
+                    "input {k} is valid, refused: {e}"
+                );
             }
         }
     }

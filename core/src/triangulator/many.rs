@@ -115,7 +115,8 @@ impl<T: Coord> Triangulator<T> {
         let many = &mut self.many;
         many.outcomes.resize_with(polygons.len(), Outcome::default);
         let threads = thread_count(options);
-        let done = threads > 1 && polygons.len() > 1 && many.in_parallel(polygons, options, threads, out);
+        let done =
+            threads > 1 && polygons.len() > 1 && many.in_parallel(polygons, options, threads, out);
         if !done {
             let jobs = polygons.iter().zip(out.iter_mut()).zip(&mut many.outcomes);
             for ((&(vertices, ring_starts), out), outcome) in jobs {
@@ -123,7 +124,10 @@ impl<T: Coord> Triangulator<T> {
                 outcome.record(&self.worker, result, out.len());
             }
         }
-        many.outcomes[..polygons.len()].iter().map(Outcome::report).collect()
+        many.outcomes[..polygons.len()]
+            .iter()
+            .map(Outcome::report)
+            .collect()
     }
 }
 
@@ -152,7 +156,10 @@ impl Many {
         let Some(pool) = &self.pool else { return false };
         let outcomes = &mut self.outcomes[..polygons.len()];
         pool.threads.install(|| {
-            let jobs = polygons.par_iter().zip(out.par_iter_mut()).zip(outcomes.par_iter_mut());
+            let jobs = polygons
+                .par_iter()
+                .zip(out.par_iter_mut())
+                .zip(outcomes.par_iter_mut());
             jobs.for_each(|((&(vertices, ring_starts), out), outcome)| {
                 // every job runs on a thread of this pool, which has a worker per thread
                 let k = rayon::current_thread_index().unwrap_or(0) % pool.workers.len();

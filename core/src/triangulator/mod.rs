@@ -110,7 +110,14 @@ impl<T: Coord> Triangulator<T> {
         let w = &mut self.worker;
         w.cx.keep_collinear = false;
         w.cx.reset(false);
-        pipeline::check_input(&mut w.cx, &mut w.stages, vertices, ring_starts, nesting, false)?;
+        pipeline::check_input(
+            &mut w.cx,
+            &mut w.stages,
+            vertices,
+            ring_starts,
+            nesting,
+            false,
+        )?;
         Ok(())
     }
 

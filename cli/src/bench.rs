@@ -62,9 +62,10 @@ means polytri is faster than every peer). polytri-fast is strict: it refuses cro
 (rings touching at vertices are fine). polytri-lenient repairs them instead of refusing; it still sweeps the edges \
 to find them, and runs extra passes on input that has some. polytri-check is strict mode's \
 input check alone (loading, the edge sweep, nesting), no triangulation: compare it with \
-polytri-fast for the check's share. The last row is the geometric mean of the ratios. Files \
-with several polygons go to earcut and polytri one polygon at a time, to the others all at \
-once.
+polytri-fast for the check's share. polytri-threads is polytri-fast with the polygons of a \
+file spread over every core (triangulate_many; one polygon runs on one thread). The last \
+row is the geometric mean of the ratios. Files with several polygons go to earcut and \
+polytri one polygon at a time, to the others all at once.
 
 --per-second: triangles per second instead (in millions; the input's triangle count, as \
 polytri-fast makes it, over each implementation's median time, so rates compare like \
@@ -85,7 +86,8 @@ pub struct Args {
           value_parser = parse_peer)]
     pub peers: Option<Vec<Peer>>,
 
-    /// polytri configurations, comma-separated: fast, lenient, quality, check [default: all]
+    /// polytri configurations, comma-separated: fast, lenient, quality, check, threads
+    /// [default: all; --scaling: all but threads]
     #[arg(long, value_delimiter = ',', value_name = "CONFIGS",
           value_parser = parse_polytri)]
     pub polytri: Option<Vec<Implementation>>,
@@ -159,7 +161,7 @@ fn parse_polytri(s: &str) -> Result<Implementation, String> {
         .into_iter()
         .find(|imp| imp.name().eq_ignore_ascii_case(&full))
         .ok_or_else(|| {
-            format!("unknown polytri configuration '{s}' (known: fast, lenient, quality, check)")
+            format!("unknown polytri configuration '{s}' (known: fast, lenient, quality, check, threads)")
         })
 }
 
@@ -264,10 +266,12 @@ pub fn run(args: &Args) -> Result<(), Failure> {
 
 /// The polytri configurations and peers chosen, polytri first.
 fn implementations(args: &Args) -> Vec<Implementation> {
-    let polytri = args
-        .polytri
-        .clone()
-        .unwrap_or_else(|| Implementation::POLYTRI.to_vec());
+    // (the scaling series are one polygon each: there polytri-threads is polytri-fast)
+    let polytri = args.polytri.clone().unwrap_or_else(|| {
+        (Implementation::POLYTRI.into_iter())
+            .filter(|&imp| !(args.scaling && imp == Implementation::PolytriThreads))
+            .collect()
+    });
     let peers = args.peers.clone().unwrap_or_else(|| Peer::ALL.to_vec());
     let mut chosen: Vec<Implementation> = Vec::new();
     for imp in polytri

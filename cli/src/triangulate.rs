@@ -56,6 +56,11 @@ pub struct Args {
     #[arg(long)]
     pub lenient: bool,
 
+    /// Threads for files of several polygons (with --nesting first-outer each polygon is
+    /// triangulated on its own); 0 uses every core. The result does not depend on it
+    #[arg(long, value_name = "N", default_value_t = 0)]
+    pub threads: usize,
+
     /// Print nothing on standard error but errors
     #[arg(short, long)]
     pub quiet: bool,
@@ -111,6 +116,7 @@ impl Args {
             .with_strategy(strategy)
             .with_nesting(nesting)
             .with_lenient(self.lenient)
+            .with_threads(self.threads)
     }
 
     fn output_format(&self) -> OutputFormat {
@@ -226,34 +232,38 @@ fn triangulate_all<T: Coord>(
     layout: &Layout,
     options: &Options,
 ) -> Result<Outcome, Refusal> {
-    let mut tri = Triangulator::<T>::new();
-    let mut outcome = Outcome::default();
-    let mut out = Vec::new();
     let pieces: Vec<_> = match options.nesting {
         Nesting::FirstIsOuter => (0..layout.polygon_rings.len())
             .map(|p| (layout.polygon_rings[p].clone(), layout.polygon_vertices(p)))
+            .filter(|(rings, span)| !rings.is_empty() && !span.is_empty())
             .collect(),
         Nesting::Auto => vec![(0..layout.ring_starts.len(), 0..vertices.len())],
     };
-    let mut ring_starts = Vec::new();
-    for (rings, span) in pieces {
-        if rings.is_empty() || span.is_empty() {
-            continue;
-        }
-        ring_starts.clear();
-        ring_starts.extend(
+    // each piece's ring starts, counted from its first vertex
+    let starts: Vec<Vec<usize>> = pieces
+        .iter()
+        .map(|(rings, span)| {
             layout.ring_starts[rings.clone()]
                 .iter()
-                .map(|s| s - span.start),
-        );
-        let refusal = |error| Refusal {
+                .map(|s| s - span.start)
+                .collect()
+        })
+        .collect();
+    let inputs: Vec<(&[[T; 2]], &[usize])> = pieces
+        .iter()
+        .zip(&starts)
+        .map(|((_, span), starts)| (&vertices[span.clone()], &starts[..]))
+        .collect();
+    let mut tri = Triangulator::<T>::new();
+    let mut out = Vec::new();
+    let results = tri.triangulate_many(&inputs, options, &mut out);
+    let mut outcome = Outcome::default();
+    for (((rings, span), result), triangles) in pieces.iter().zip(results).zip(&out) {
+        let report = result.map_err(|error| Refusal {
             error,
             vertex_offset: span.start,
             ring_offset: rings.start,
-        };
-        let report = tri
-            .triangulate(&vertices[span.clone()], &ring_starts, options, &mut out)
-            .map_err(refusal)?;
+        })?;
         outcome.polygons += report.polygons;
         outcome.holes += report.holes;
         outcome.repairs += report.repairs.len();
@@ -267,7 +277,7 @@ fn triangulate_all<T: Coord>(
         let offset = span.start as u32;
         outcome
             .triangles
-            .extend(out.iter().map(|t| t.map(|i| i + offset)));
+            .extend(triangles.iter().map(|t| t.map(|i| i + offset)));
     }
     Ok(outcome)
 }

@@ -60,6 +60,7 @@ fn table_has_every_column_and_a_geometric_mean() {
         "polytri-lenient ms",
         "polytri-quality ms",
         "polytri-check ms",
+        "polytri-threads ms",
         "earcut ms",
         "earcutr ms",
         "i-triangle ms",
@@ -76,12 +77,12 @@ fn table_has_every_column_and_a_geometric_mean() {
     assert_eq!(row[..3], ["building", "1", "15"]);
     assert!(row[3].parse::<usize>().is_ok_and(|t| t > 10), "{row:?}");
     // every implementation: a time and a ratio, none failed; then the fastest peer's name
-    assert_eq!(row.len(), 4 + 2 * 9 + 1, "{row:?}");
+    assert_eq!(row.len(), 4 + 2 * 10 + 1, "{row:?}");
     assert!(
         ["earcut", "earcutr", "i-triangle", "lyon", "spade"].contains(&row[row.len() - 1]),
         "{row:?}"
     );
-    assert_eq!(lines[2].matches('×').count(), 9, "{}", lines[2]);
+    assert_eq!(lines[2].matches('×').count(), 10, "{}", lines[2]);
 }
 
 #[test]
@@ -101,12 +102,13 @@ fn json_lists_chosen_peers() {
             "polytri-lenient",
             "polytri-quality",
             "polytri-check",
+            "polytri-threads",
             "earcut",
             "i-triangle"
         ]
     );
     let timings = &json["rows"][0]["timings"];
-    assert_eq!(timings.as_array().map(Vec::len), Some(6));
+    assert_eq!(timings.as_array().map(Vec::len), Some(7));
     // whichever peer is faster has ratio exactly 1
     let ones = (4..6)
         .filter(|&k| timings[k]["ratio"].as_f64() == Some(1.0))

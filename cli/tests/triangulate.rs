@@ -502,3 +502,25 @@ fn odd_inputs_never_panic() {
         }
     }
 }
+
+#[test]
+fn threads_do_not_change_the_result() {
+    // the paper's page of Latin text: 54 glyph polygons, each triangulated on its own
+    let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../corpus/datasets/lorem_latin.json");
+    let runs: Vec<Value> = ["1", "2", "0"]
+        .into_iter()
+        .map(|threads| triangulate(&file, &["--nesting", "first-outer", "--threads", threads]).0)
+        .collect();
+    assert!(triangles(&runs[0]).len() > 1000);
+    assert!(runs.iter().all(|r| r == &runs[0]));
+    // and an error names the same polygon whichever thread met it
+    let dir = scratch("threads");
+    let text = format!(
+        "[{SQUARE}, {SQUARE}, [[[20,0],[30,0],[30,10],[20,10]], [[40,0],[41,0],[41,1]]], {SQUARE}]"
+    );
+    let file = write(&dir, "shapes.json", &text);
+    for threads in ["1", "2"] {
+        let message = refused(&file, &["--nesting", "first-outer", "--threads", threads]);
+        assert!(message.contains("polygon 2, ring 1"), "{message}");
+    }
+}

@@ -29,17 +29,22 @@ pub enum Implementation {
     /// of [`PolytriFast`](Self::PolytriFast)'s time. Makes no triangles ([`Runner::run`]
     /// returns 0).
     PolytriCheck,
+    /// polytri, fast strategy, strict, on every core: the polygons of a file of several
+    /// spread over threads ([`polytri::Triangulator::triangulate_many`]); a single
+    /// polygon runs as [`PolytriFast`](Self::PolytriFast) does.
+    PolytriThreads,
     /// Another triangulator.
     Peer(Peer),
 }
 
 impl Implementation {
     /// The polytri configurations, in the order tables show them.
-    pub const POLYTRI: [Implementation; 4] = [
+    pub const POLYTRI: [Implementation; 5] = [
         Implementation::PolytriFast,
         Implementation::PolytriLenient,
         Implementation::PolytriQuality,
         Implementation::PolytriCheck,
+        Implementation::PolytriThreads,
     ];
 
     /// Every polytri configuration, then every peer.
@@ -67,6 +72,7 @@ impl Implementation {
             Implementation::PolytriLenient => "polytri-lenient",
             Implementation::PolytriQuality => "polytri-quality",
             Implementation::PolytriCheck => "polytri-check",
+            Implementation::PolytriThreads => "polytri-threads",
             Implementation::Peer(peer) => peer.name(),
         }
     }
@@ -147,6 +153,7 @@ impl Prepared {
 pub struct Runner {
     polytri: polytri::Triangulator<f64>,
     polytri_out: Vec<[u32; 3]>,
+    polytri_many_out: Vec<Vec<[u32; 3]>>,
     earcut: earcut::Earcut<f64>,
     earcut_out: Vec<u32>,
     i_triangle: i_triangle::float::triangulator::Triangulator<u32, i32>,
@@ -173,6 +180,7 @@ impl Runner {
         Runner {
             polytri: polytri::Triangulator::new(),
             polytri_out: Vec::new(),
+            polytri_many_out: Vec::new(),
             earcut: earcut::Earcut::new(),
             earcut_out: Vec::new(),
             i_triangle: super::i_triangle::triangulator(64),
@@ -213,6 +221,7 @@ impl Runner {
                 polytri::Options::new().with_strategy(polytri::Strategy::Quality),
             ),
             Implementation::PolytriCheck => self.polytri_check(prepared),
+            Implementation::PolytriThreads => self.polytri_threads(prepared),
             Implementation::Peer(Peer::Earcut) => Ok(self.earcut(prepared)),
             Implementation::Peer(Peer::Earcutr) => earcutr(prepared),
             Implementation::Peer(Peer::ITriangle) => Ok(self.i_triangle(prepared)),
@@ -230,6 +239,32 @@ impl Runner {
             self.polytri
                 .triangulate(vertices, ring_starts, &options, out)
                 .map(|report| report.triangles)
+        })
+    }
+
+    /// polytri-fast on every core: the same calls as [`Runner::polytri`], given to
+    /// `triangulate_many` at once.
+    fn polytri_threads(&mut self, prepared: &Prepared) -> Result<usize, String> {
+        let input = &prepared.input;
+        let (calls, nesting): (Vec<(&[[f64; 2]], &[usize])>, _) = match input.nesting.to_polytri() {
+            Some(nesting) => (vec![(&input.vertices, &input.ring_starts)], nesting),
+            None => (
+                (prepared.polygons.iter())
+                    .map(|p| (&p.vertices[..], &p.ring_starts[..]))
+                    .collect(),
+                polytri::Nesting::FirstIsOuter,
+            ),
+        };
+        let options = polytri::Options::new()
+            .with_nesting(nesting)
+            .with_threads(0);
+        let results = self
+            .polytri
+            .triangulate_many(&calls, &options, &mut self.polytri_many_out);
+        results.into_iter().try_fold(0, |triangles, result| {
+            result
+                .map(|report| triangles + report.triangles)
+                .map_err(|e| e.to_string())
         })
     }
 

@@ -1,5 +1,6 @@
 //! Runs polytri on one rings or shapes JSON file many times, for a profiler:
-//! `cargo run --release -p polytri --example profile -- FILE [RUNS] [fast|lenient|quality|check] [first|auto]`.
+//! `cargo run --release -p polytri --example profile -- FILE [RUNS] [fast|lenient|quality|check|threads:N] [first|auto]`
+//! (`threads:N` needs `--features threads`).
 //! Shapes go one polygon at a time (first ring outer, unless `auto` asks for nesting by
 //! containment), as `polytri bench` gives them.
 
@@ -39,9 +40,14 @@ fn main() {
         })
         .collect();
     let options = Options::new().with_nesting(nesting);
+    // `threads:N`: the fast strategy through `triangulate_many` on N threads (0: every core)
+    let threads = mode
+        .strip_prefix("threads:")
+        .map(|n| n.parse().expect("threads:N"));
     let options = match mode {
         // `check` takes only the nesting convention
         "fast" | "check" => options,
+        _ if threads.is_some() => options.with_threads(threads.unwrap_or(1)),
         "lenient" => options.with_lenient(true),
         "quality" => options.with_strategy(Strategy::Quality),
         other => panic!("unknown mode {other}"),
@@ -49,8 +55,18 @@ fn main() {
     let mut tri = Triangulator::<f64>::new();
     let mut out = Vec::new();
     let mut triangles = 0;
+    let many: Vec<(&[[f64; 2]], &[usize])> = flat.iter().map(|(v, s)| (&v[..], &s[..])).collect();
+    let mut many_out = Vec::new();
     let began = std::time::Instant::now();
     for _ in 0..runs {
+        if threads.is_some() {
+            let results = tri.triangulate_many(&many, &options, &mut many_out);
+            triangles += results
+                .iter()
+                .map(|r| r.as_ref().map_or(0, |r| r.triangles))
+                .sum::<usize>();
+            continue;
+        }
         for (vertices, starts) in &flat {
             if mode == "check" {
                 triangles += usize::from(tri.check(vertices, starts, nesting).is_ok());

@@ -53,6 +53,15 @@ impl fmt::Display for Format {
     }
 }
 
+/// A GeoJSON feature's identity, for writing its triangles back with it.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Feature {
+    /// The feature's `id`, if it has one.
+    pub id: Option<geojson::feature::Id>,
+    /// The feature's `properties`, if it has any.
+    pub properties: Option<geojson::JsonObject>,
+}
+
 /// The polygons of one file, and what was skipped on the way.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Input {
@@ -60,6 +69,11 @@ pub struct Input {
     pub format: Format,
     /// Every polygon, in file order.
     pub polygons: Vec<Polygon>,
+    /// GeoJSON: the features that hold polygons, in file order (a bare geometry is one
+    /// feature without id or properties). Other formats: empty.
+    pub features: Vec<Feature>,
+    /// GeoJSON: per polygon, the index of its feature in `features`. Other formats: empty.
+    pub polygon_feature: Vec<usize>,
     /// Geometries that are not polygons (points, lines, features without geometry), by
     /// type name, with how many of each were skipped.
     pub skipped: BTreeMap<&'static str, usize>,
@@ -70,6 +84,8 @@ impl Input {
         Input {
             format,
             polygons: Vec::new(),
+            features: Vec::new(),
+            polygon_feature: Vec::new(),
             skipped: BTreeMap::new(),
         }
     }
@@ -269,7 +285,10 @@ fn parse_geojson(text: &str) -> Result<Input, String> {
         serde_json::from_str(text).map_err(|e| format!("invalid GeoJSON: {e}"))?;
     let mut input = Input::new(Format::GeoJson);
     match geojson {
-        GeoJson::Geometry(geometry) => geojson_geometry(&mut input, geometry.value)?,
+        GeoJson::Geometry(geometry) => {
+            input.features.push(Feature::default());
+            geojson_geometry(&mut input, geometry.value)?;
+        }
         GeoJson::Feature(feature) => geojson_feature(&mut input, feature)?,
         GeoJson::FeatureCollection(collection) => {
             for feature in collection.features {
@@ -282,7 +301,13 @@ fn parse_geojson(text: &str) -> Result<Input, String> {
 
 fn geojson_feature(input: &mut Input, feature: geojson::Feature) -> Result<(), String> {
     match feature.geometry {
-        Some(geometry) => geojson_geometry(input, geometry.value),
+        Some(geometry) => {
+            input.features.push(Feature {
+                id: feature.id,
+                properties: feature.properties,
+            });
+            geojson_geometry(input, geometry.value)
+        }
         None => {
             input.skip("Feature without geometry");
             Ok(())
@@ -327,6 +352,10 @@ fn geojson_polygon(input: &mut Input, rings: geojson::PolygonType) -> Result<(),
         push_ring(&mut polygon, points);
     }
     input.polygons.push(polygon);
+    // (every polygon is read within a feature, pushed before its geometry)
+    input
+        .polygon_feature
+        .push(input.features.len().saturating_sub(1));
     Ok(())
 }
 

@@ -6,6 +6,67 @@ use serde::Serialize;
 
 use crate::layout::Layout;
 
+/// One output feature of `--format geojson`: triangles (indices into the vertices) and the
+/// input feature's id and properties.
+#[derive(Debug, Default)]
+pub struct TriangleFeature<'a> {
+    /// Indices into the written vertices.
+    pub triangles: Vec<[u32; 3]>,
+    /// The input feature's `id`.
+    pub id: Option<&'a geojson::feature::Id>,
+    /// The input feature's `properties`.
+    pub properties: Option<&'a geojson::JsonObject>,
+    /// False for a feature that is left out (a polygon of it was refused, or it has no
+    /// triangles).
+    pub written: bool,
+}
+
+/// Writes a GeoJSON FeatureCollection: per written feature a MultiPolygon of its triangles
+/// (each a closed ring of four positions, counter-clockwise) with its id and properties,
+/// or with `per_triangle` one Polygon feature per triangle, each with them.
+pub fn write_geojson<W: Write>(
+    mut w: W,
+    vertices: &[[f64; 2]],
+    features: &[TriangleFeature<'_>],
+    per_triangle: bool,
+) -> io::Result<()> {
+    let ring = |t: &[u32; 3]| -> Vec<Vec<f64>> {
+        let p = |i: u32| vertices.get(i as usize).map_or(vec![], |v| v.to_vec());
+        vec![p(t[0]), p(t[1]), p(t[2]), p(t[0])]
+    };
+    let feature = |f: &TriangleFeature<'_>, value: geojson::GeometryValue| geojson::Feature {
+        bbox: None,
+        geometry: Some(geojson::Geometry::new(value)),
+        id: f.id.cloned(),
+        properties: f.properties.cloned(),
+        foreign_members: None,
+    };
+    let mut out = Vec::new();
+    for f in features.iter().filter(|f| f.written) {
+        if per_triangle {
+            out.extend(
+                f.triangles
+                    .iter()
+                    .map(|t| feature(f, geojson::GeometryValue::new_polygon(vec![ring(t)]))),
+            );
+        } else {
+            let polygons: Vec<Vec<Vec<Vec<f64>>>> =
+                f.triangles.iter().map(|t| vec![ring(t)]).collect();
+            out.push(feature(
+                f,
+                geojson::GeometryValue::new_multi_polygon(polygons),
+            ));
+        }
+    }
+    let collection = geojson::FeatureCollection {
+        bbox: None,
+        features: out,
+        foreign_members: None,
+    };
+    serde_json::to_writer(&mut w, &collection)?;
+    writeln!(w)
+}
+
 /// The result JSON: `{"vertices": [[x, y], …], "triangles": [[a, b, c], …]}`.
 #[derive(Serialize)]
 struct ResultJson<'a> {

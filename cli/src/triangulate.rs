@@ -2,6 +2,7 @@
 
 use std::fs::File;
 use std::io::{self, BufWriter, Write};
+use std::ops::Range;
 use std::path::{Path, PathBuf};
 
 use clap::ValueEnum;
@@ -46,8 +47,9 @@ pub struct Args {
     #[arg(long, value_enum, default_value_t = Precision::F64)]
     pub precision: Precision,
 
-    /// Which rings are holes: by containment (auto), or each polygon's first ring is its
-    /// outer boundary and the others its holes (first-outer, earcut's convention)
+    /// Which rings of a polygon are holes: by containment (auto: any order and winding),
+    /// or its first ring is the outer boundary and the others its holes (first-outer,
+    /// earcut's convention)
     #[arg(long, value_enum, default_value_t = NestingArg::Auto)]
     pub nesting: NestingArg,
 
@@ -56,8 +58,23 @@ pub struct Args {
     #[arg(long)]
     pub lenient: bool,
 
-    /// Threads for files of several polygons (with --nesting first-outer each polygon is
-    /// triangulated on its own); 0 uses every core. The result does not depend on it
+    /// Triangulate all rings of the file together, as one set of rings (glyph outlines
+    /// that come as one soup across the file), instead of each polygon on its own
+    #[arg(long)]
+    pub merge: bool,
+
+    /// Strict mode: triangulate every polygon that can be, report each one that cannot,
+    /// write the rest, and exit with status 1 if any failed
+    #[arg(long)]
+    pub keep_going: bool,
+
+    /// With --format geojson: one Feature per triangle instead of one MultiPolygon per
+    /// input feature
+    #[arg(long)]
+    pub per_triangle: bool,
+
+    /// Threads for files of several polygons; 0 uses every core. The result does not
+    /// depend on it
     #[arg(long, value_name = "N", default_value_t = 0)]
     pub threads: usize,
 
@@ -73,6 +90,9 @@ pub enum OutputFormat {
     Json,
     /// A picture of the triangles and the input rings.
     Svg,
+    /// A GeoJSON FeatureCollection: per input feature its triangles as a MultiPolygon,
+    /// with the feature's id and properties.
+    Geojson,
 }
 
 /// `--strategy`, mirroring [`polytri::Strategy`] (which is not a clap type).
@@ -125,8 +145,14 @@ impl Args {
             .as_deref()
             .and_then(Path::extension)
             .is_some_and(|ext| ext.eq_ignore_ascii_case("svg"));
+        let extension = |ext: &str| {
+            (self.output.as_deref().and_then(Path::extension))
+                .is_some_and(|e| e.eq_ignore_ascii_case(ext))
+        };
         self.format.unwrap_or(if svg_name {
             OutputFormat::Svg
+        } else if extension("geojson") {
+            OutputFormat::Geojson
         } else {
             OutputFormat::Json
         })
@@ -162,8 +188,9 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     }
 
     let options = args.options();
-    let outcome = match args.precision {
-        Precision::F64 => triangulate_all(&layout.vertices, &layout, &options),
+    let pieces = pieces(&layout, args.merge);
+    let results = match args.precision {
+        Precision::F64 => triangulate_pieces(&layout.vertices, &layout, &pieces, &options),
         Precision::F32 => {
             // Rounding is the point of --precision f32; values beyond f32's range become
             // infinite, which the triangulator reports (strict) or drops (lenient).
@@ -172,21 +199,35 @@ pub fn run(args: &Args) -> Result<(), Failure> {
                 .iter()
                 .map(|v| [v[0] as f32, v[1] as f32])
                 .collect();
-            triangulate_all(&narrow, &layout, &options)
+            triangulate_pieces(&narrow, &layout, &pieces, &options)
         }
+    };
+    let describe = |refused: &Refusal| describe_error(refused, &layout, args.precision);
+    let failed: Vec<&Refusal> = results.iter().filter_map(|r| r.as_ref().err()).collect();
+    if let Some(first) = failed.first().filter(|_| !args.keep_going) {
+        return Err(Failure(format!("{name}: {}", describe(first))));
     }
-    .map_err(|refused| {
-        Failure(format!(
-            "{name}: {}",
-            describe_error(&refused, &layout, args.precision)
-        ))
-    })?;
-
-    write_result(args, &layout, &outcome)?;
+    for refused in &failed {
+        // --keep-going: every refused polygon, then the rest is written
+        say(format_args!(
+            "polytri: error: {name}: {}",
+            describe(refused)
+        ));
+    }
+    let outcome = Outcome::gather(&results);
+    write_result(args, &input, &layout, &pieces, &results, &outcome)?;
     if !args.quiet {
         say(format_args!("polytri: {name}: {}", summary(&outcome)));
     }
-    Ok(())
+    if failed.is_empty() {
+        Ok(())
+    } else {
+        Err(Failure(format!(
+            "{name}: {} of {} refused, the rest written",
+            plural(failed.len(), "polygon", "polygons"),
+            results.len()
+        )))
+    }
 }
 
 fn warn_skipped(name: &str, input: &Input) {
@@ -204,6 +245,18 @@ fn warn_skipped(name: &str, input: &Input) {
     ));
 }
 
+/// What one piece (a polygon, or every ring with --merge) came to, with triangles indexing
+/// the layout's vertices.
+#[derive(Debug, Default)]
+struct Piece {
+    triangles: Vec<[u32; 3]>,
+    polygons: usize,
+    holes: usize,
+    /// Flat indices of the vertices no triangle uses.
+    dropped: Vec<usize>,
+    repairs: usize,
+}
+
 /// All triangulations of one run, with indices into the layout's vertices.
 #[derive(Debug, Default)]
 struct Outcome {
@@ -213,10 +266,32 @@ struct Outcome {
     /// Flat indices of the vertices no triangle uses.
     dropped: Vec<usize>,
     repairs: usize,
+    /// Pieces refused (with --keep-going).
+    refused: usize,
 }
 
-/// An error of the triangulator with what to add to its indices to make them flat: with
-/// `first-outer` each polygon is triangulated on its own, and numbered from 0.
+impl Outcome {
+    /// Every piece triangulated, together.
+    fn gather(results: &[Result<Piece, Refusal>]) -> Self {
+        let mut outcome = Outcome::default();
+        for result in results {
+            match result {
+                Ok(piece) => {
+                    outcome.triangles.extend_from_slice(&piece.triangles);
+                    outcome.polygons += piece.polygons;
+                    outcome.holes += piece.holes;
+                    outcome.dropped.extend_from_slice(&piece.dropped);
+                    outcome.repairs += piece.repairs;
+                }
+                Err(_) => outcome.refused += 1,
+            }
+        }
+        outcome
+    }
+}
+
+/// An error of the triangulator with what to add to its indices to make them flat: each
+/// piece is triangulated on its own, and numbered from 0.
 #[derive(Debug)]
 struct Refusal {
     error: Error,
@@ -224,21 +299,26 @@ struct Refusal {
     ring_offset: usize,
 }
 
-/// Triangulates every polygon of `layout`, whose vertices in the wanted precision are
-/// `vertices`: in one call when containment decides the nesting, else one call per polygon,
-/// as `FirstIsOuter` describes a single polygon.
-fn triangulate_all<T: Coord>(
+/// The pieces triangulated on their own, as (rings, vertices) ranges of `layout`: each
+/// polygon of the file (or, with `merge`, all rings together), empty ones left out.
+fn pieces(layout: &Layout, merge: bool) -> Vec<(Range<usize>, Range<usize>)> {
+    if merge {
+        return vec![(0..layout.ring_starts.len(), 0..layout.vertices.len())];
+    }
+    (0..layout.polygon_rings.len())
+        .map(|p| (layout.polygon_rings[p].clone(), layout.polygon_vertices(p)))
+        .filter(|(rings, span)| !rings.is_empty() && !span.is_empty())
+        .collect()
+}
+
+/// Triangulates every piece of `layout`, whose vertices in the wanted precision are
+/// `vertices`, through `triangulate_many` (spread over `options.threads`).
+fn triangulate_pieces<T: Coord>(
     vertices: &[[T; 2]],
     layout: &Layout,
+    pieces: &[(Range<usize>, Range<usize>)],
     options: &Options,
-) -> Result<Outcome, Refusal> {
-    let pieces: Vec<_> = match options.nesting {
-        Nesting::FirstIsOuter => (0..layout.polygon_rings.len())
-            .map(|p| (layout.polygon_rings[p].clone(), layout.polygon_vertices(p)))
-            .filter(|(rings, span)| !rings.is_empty() && !span.is_empty())
-            .collect(),
-        Nesting::Auto => vec![(0..layout.ring_starts.len(), 0..vertices.len())],
-    };
+) -> Vec<Result<Piece, Refusal>> {
     // each piece's ring starts, counted from its first vertex
     let starts: Vec<Vec<usize>> = pieces
         .iter()
@@ -257,29 +337,27 @@ fn triangulate_all<T: Coord>(
     let mut tri = Triangulator::<T>::new();
     let mut out = Vec::new();
     let results = tri.triangulate_many(&inputs, options, &mut out);
-    let mut outcome = Outcome::default();
-    for (((rings, span), result), triangles) in pieces.iter().zip(results).zip(&out) {
-        let report = result.map_err(|error| Refusal {
-            error,
-            vertex_offset: span.start,
-            ring_offset: rings.start,
-        })?;
-        outcome.polygons += report.polygons;
-        outcome.holes += report.holes;
-        outcome.repairs += report.repairs.len();
-        outcome.dropped.extend(
-            report
-                .dropped
-                .iter()
-                .map(|d| d.vertex as usize + span.start),
-        );
-        // Fits: the caller checked that all vertices are addressable by u32.
-        let offset = span.start as u32;
-        outcome
-            .triangles
-            .extend(triangles.iter().map(|t| t.map(|i| i + offset)));
-    }
-    Ok(outcome)
+    let pieces = pieces.iter().zip(results).zip(&out);
+    pieces
+        .map(|(((rings, span), result), triangles)| {
+            let report = result.map_err(|error| Refusal {
+                error,
+                vertex_offset: span.start,
+                ring_offset: rings.start,
+            })?;
+            // Fits: the caller checked that all vertices are addressable by u32.
+            let offset = span.start as u32;
+            Ok(Piece {
+                triangles: triangles.iter().map(|t| t.map(|i| i + offset)).collect(),
+                polygons: report.polygons,
+                holes: report.holes,
+                dropped: (report.dropped.iter())
+                    .map(|d| d.vertex as usize + span.start)
+                    .collect(),
+                repairs: report.repairs.len(),
+            })
+        })
+        .collect()
 }
 
 /// Says what the triangulator refused and where in the file.
@@ -348,11 +426,22 @@ fn describe_error(refusal: &Refusal, layout: &Layout, precision: Precision) -> S
     }
 }
 
-fn write_result(args: &Args, layout: &Layout, outcome: &Outcome) -> Result<(), Failure> {
+fn write_result(
+    args: &Args,
+    input: &Input,
+    layout: &Layout,
+    pieces: &[(Range<usize>, Range<usize>)],
+    results: &[Result<Piece, Refusal>],
+    outcome: &Outcome,
+) -> Result<(), Failure> {
     let write = |w: &mut dyn Write| -> io::Result<()> {
         match args.output_format() {
             OutputFormat::Json => output::write_json(w, &layout.vertices, &outcome.triangles),
             OutputFormat::Svg => output::write_svg(w, layout, &outcome.triangles, &outcome.dropped),
+            OutputFormat::Geojson => {
+                let features = features(input, layout, pieces, results, args.merge);
+                output::write_geojson(w, &layout.vertices, &features, args.per_triangle)
+            }
         }
     };
     match &args.output {
@@ -366,19 +455,79 @@ fn write_result(args: &Args, layout: &Layout, outcome: &Outcome) -> Result<(), F
     }
 }
 
+/// The output features: per input feature (GeoJSON) or polygon (other formats) whose every
+/// polygon was triangulated, its triangles with its id and properties. With `merge`, one
+/// feature of all triangles.
+fn features<'a>(
+    input: &'a Input,
+    layout: &Layout,
+    pieces: &[(Range<usize>, Range<usize>)],
+    results: &'a [Result<Piece, Refusal>],
+    merge: bool,
+) -> Vec<output::TriangleFeature<'a>> {
+    let blank = output::TriangleFeature::default;
+    if merge {
+        let mut all = blank();
+        all.triangles = results
+            .iter()
+            .flatten()
+            .flat_map(|p| &p.triangles)
+            .copied()
+            .collect();
+        return vec![all];
+    }
+    // the input feature of each piece's polygon, by the piece's first ring
+    let feature_of = |rings: &Range<usize>| {
+        let polygon = layout
+            .ring_origins
+            .get(rings.start)
+            .map_or(0, |o| o.polygon);
+        input
+            .polygon_feature
+            .get(polygon)
+            .copied()
+            .unwrap_or(polygon)
+    };
+    let count = pieces
+        .iter()
+        .map(|(rings, _)| feature_of(rings) + 1)
+        .max()
+        .unwrap_or(0);
+    let mut features: Vec<output::TriangleFeature<'a>> = (0..count).map(|_| blank()).collect();
+    let mut refused = vec![false; count];
+    for ((rings, _), result) in pieces.iter().zip(results) {
+        let f = feature_of(rings);
+        match result {
+            Ok(piece) => features[f].triangles.extend_from_slice(&piece.triangles),
+            Err(_) => refused[f] = true,
+        }
+    }
+    for (f, feature) in features.iter_mut().enumerate() {
+        if let Some(info) = input.features.get(f) {
+            feature.id = info.id.as_ref();
+            feature.properties = info.properties.as_ref();
+        }
+        feature.written = !refused[f] && !feature.triangles.is_empty();
+    }
+    features
+}
+
 fn plural(n: usize, one: &str, many: &str) -> String {
     format!("{n} {}", if n == 1 { one } else { many })
 }
 
 fn summary(outcome: &Outcome) -> String {
-    [
+    let mut parts = vec![
         plural(outcome.polygons, "polygon", "polygons"),
         plural(outcome.holes, "hole", "holes"),
         plural(outcome.triangles.len(), "triangle", "triangles"),
         plural(outcome.dropped.len(), "dropped vertex", "dropped vertices"),
         plural(outcome.repairs, "repair", "repairs"),
-    ]
-    .join(", ")
+    ];
+    if outcome.refused > 0 {
+        parts.push(format!("{} refused", outcome.refused));
+    }
+    parts.join(", ")
 }
 
 #[cfg(test)]
@@ -393,6 +542,7 @@ mod tests {
             holes: 1,
             dropped: vec![4, 5],
             repairs: 0,
+            refused: 0,
         };
         assert_eq!(
             summary(&outcome),

@@ -524,3 +524,108 @@ fn threads_do_not_change_the_result() {
         assert!(message.contains("polygon 2, ring 1"), "{message}");
     }
 }
+
+/// A FeatureCollection of features, each `(id, name, polygon coordinates JSON)`.
+fn collection(features: &[(&str, &str, &str)]) -> String {
+    let features: Vec<String> = features
+        .iter()
+        .map(|(id, name, coordinates)| {
+            format!(
+                r#"{{"type": "Feature", "id": "{id}", "properties": {{"name": "{name}"}},
+                    "geometry": {{"type": "Polygon", "coordinates": {coordinates}}}}}"#
+            )
+        })
+        .collect();
+    format!(
+        r#"{{"type": "FeatureCollection", "features": [{}]}}"#,
+        features.join(",")
+    )
+}
+
+#[test]
+fn each_polygon_on_its_own_unless_merged() {
+    let dir = scratch("per_polygon");
+    // two overlapping squares, as neighbouring counties of a layer often are
+    let text = collection(&[
+        ("a", "West", "[[[0,0],[10,0],[10,10],[0,10],[0,0]]]"),
+        ("b", "East", "[[[9,-1],[20,-1],[20,11],[9,11],[9,-1]]]"),
+    ]);
+    let file = write(&dir, "layer.geojson", &text);
+    let (json, _) = triangulate(&file, &[]);
+    assert_eq!(triangles(&json).len(), 4);
+    let message = refused(&file, &["--merge"]);
+    assert!(message.contains("edges cross"), "{message}");
+    // within a polygon, rings in any order: the hole first, both wound alike
+    let text = r#"[[[3,3],[7,3],[7,7],[3,7]], [[0,0],[10,0],[10,10],[0,10]]]"#;
+    let file = write(&dir, "hole_first.json", text);
+    let (json, _) = triangulate(&file, &[]);
+    assert_eq!(triangles(&json).len(), 8);
+}
+
+#[test]
+fn keep_going_writes_the_valid_features_as_geojson() {
+    let dir = scratch("keep_going");
+    let text = collection(&[
+        ("a", "First", "[[[0,0],[10,0],[10,10],[0,10],[0,0]]]"),
+        ("bad", "Bow tie", "[[[20,0],[30,10],[30,0],[20,10],[20,0]]]"),
+        (
+            "c",
+            "Framed",
+            "[[[40,0],[50,0],[50,10],[40,10],[40,0]], [[43,3],[43,7],[47,7],[47,3],[43,3]]]",
+        ),
+    ]);
+    let file = write(&dir, "layer.geojson", &text);
+    let out_path = dir.join("out.geojson");
+    let out = polytri(&[
+        "triangulate",
+        file.to_str().expect("utf-8"),
+        "--keep-going",
+        "-o",
+        out_path.to_str().expect("utf-8"),
+    ]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("polygon 1") && stderr.contains("edges cross"),
+        "{stderr}"
+    );
+    assert!(stderr.contains("1 polygon of 3 refused"), "{stderr}");
+    let written: Value =
+        serde_json::from_str(&std::fs::read_to_string(&out_path).expect("output")).expect("JSON");
+    let features = written["features"].as_array().expect("features");
+    let ids: Vec<&str> = features.iter().filter_map(|f| f["id"].as_str()).collect();
+    assert_eq!(ids, ["a", "c"]);
+    assert_eq!(features[1]["properties"]["name"], "Framed");
+    let count = |f: &Value| f["geometry"]["coordinates"].as_array().map_or(0, Vec::len);
+    assert_eq!((count(&features[0]), count(&features[1])), (2, 8));
+    // every triangle a closed ring of four positions, its area the polygon's share
+    let area: f64 = features[1]["geometry"]["coordinates"]
+        .as_array()
+        .expect("polygons")
+        .iter()
+        .map(|polygon| {
+            let p: Vec<[f64; 2]> = serde_json::from_value(polygon[0].clone()).expect("ring");
+            assert_eq!((p.len(), p[0]), (4, p[3]));
+            ((p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[2][0] - p[0][0]) * (p[1][1] - p[0][1]))
+                / 2.0
+        })
+        .sum();
+    assert_eq!(area, 100.0 - 16.0);
+    // without --keep-going the first refusal stops everything
+    let message = refused(&file, &[]);
+    assert!(message.contains("polygon 1"), "{message}");
+}
+
+#[test]
+fn per_triangle_features_keep_their_properties() {
+    let dir = scratch("per_triangle");
+    let text = collection(&[("sq", "Square", "[[[0,0],[10,0],[10,10],[0,10],[0,0]]]")]);
+    let file = write(&dir, "one.geojson", &text);
+    let (json, _) = triangulate(&file, &["--format", "geojson", "--per-triangle"]);
+    let features = json["features"].as_array().expect("features");
+    assert_eq!(features.len(), 2);
+    assert!(features
+        .iter()
+        .all(|f| f["id"] == "sq" && f["properties"]["name"] == "Square"));
+    assert!(features.iter().all(|f| f["geometry"]["type"] == "Polygon"));
+}

@@ -9,16 +9,17 @@ use polytri_oracle::{check, Input, Nesting};
 #[derive(Debug, PartialEq)]
 struct Outcome {
     triangles: Vec<[u32; 3]>,
-    result: Result<
-        (
-            usize,
-            usize,
-            usize,
-            Vec<polytri::Dropped>,
-            Vec<polytri::Repair>,
-        ),
-        Error,
-    >,
+    result: Result<Report, Error>,
+}
+
+/// A `polytri::Report`, owned: triangles, polygons, holes, dropped, repairs.
+#[derive(Debug, PartialEq)]
+struct Report {
+    triangles: usize,
+    polygons: usize,
+    holes: usize,
+    dropped: Vec<polytri::Dropped>,
+    repairs: Vec<polytri::Repair>,
 }
 
 /// Seeded inputs of every generator family and size, plus inputs strict mode refuses
@@ -48,14 +49,12 @@ fn inputs() -> Vec<Input> {
 fn outcome(triangles: &[[u32; 3]], report: Result<polytri::Report<'_>, Error>) -> Outcome {
     Outcome {
         triangles: triangles.to_vec(),
-        result: report.map(|r| {
-            (
-                r.triangles,
-                r.polygons,
-                r.holes,
-                r.dropped.to_vec(),
-                r.repairs.to_vec(),
-            )
+        result: report.map(|r| Report {
+            triangles: r.triangles,
+            polygons: r.polygons,
+            holes: r.holes,
+            dropped: r.dropped.to_vec(),
+            repairs: r.repairs.to_vec(),
         }),
     }
 }
@@ -128,8 +127,8 @@ fn the_oracle_accepts_every_parallel_triangulation() {
         .enumerate()
     {
         match got.result {
-            Ok((triangles, ..)) => {
-                assert_eq!(triangles, got.triangles.len());
+            Ok(report) => {
+                assert_eq!(report.triangles, got.triangles.len());
                 let verdict = check(input, &got.triangles);
                 assert!(verdict.valid, "input {k}: {:?}", verdict.failures());
             }

@@ -246,7 +246,7 @@ impl Runner {
     /// `triangulate_many` at once.
     fn polytri_threads(&mut self, prepared: &Prepared) -> Result<usize, String> {
         let input = &prepared.input;
-        let (calls, nesting): (Vec<(&[[f64; 2]], &[usize])>, _) = match input.nesting.to_polytri() {
+        let (calls, nesting): (Vec<Call<'_>>, _) = match input.nesting.to_polytri() {
             Some(nesting) => (vec![(&input.vertices, &input.ring_starts)], nesting),
             None => (
                 (prepared.polygons.iter())
@@ -304,6 +304,9 @@ impl Runner {
         Ok(self.lyon_out.indices.len() / 3)
     }
 }
+
+/// One call of polytri: vertices and ring starts.
+type Call<'a> = (&'a [[f64; 2]], &'a [usize]);
 
 /// Calls `call` (vertices, ring starts, nesting; it returns triangles) once on the whole
 /// input for `Auto` and `FirstIsOuter`, else once per polygon, first-is-outer; the sum.

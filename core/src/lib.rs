@@ -33,6 +33,8 @@
 mod context;
 mod crossings;
 mod error;
+#[cfg(feature = "geo-types")]
+pub mod geo;
 mod geom;
 mod options;
 mod report;

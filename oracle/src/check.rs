@@ -29,7 +29,7 @@ use std::collections::HashSet;
 
 use serde::{Deserialize, Serialize};
 
-use crate::input::Input;
+use crate::input::{Input, Nesting};
 use crate::metrics;
 
 mod geo;
@@ -177,6 +177,56 @@ impl Failures {
 /// ```
 pub fn check(input: &Input, triangles: &[[u32; 3]]) -> Verdict {
     check_with(input, triangles, &CheckOptions::full())
+}
+
+/// Verifies any program's triangulation of a polygon with holes: `triangles` (index
+/// triples into `vertices`) against the rings `vertices` and `ring_starts` describe, with
+/// holes decided by `nesting` as polytri decides them. The verdict names each failed
+/// check and the first triangle or edge it failed on; `verdict.valid` is the answer.
+///
+/// This is polytri's second product: an independent judge with its own exact arithmetic,
+/// for polytri's results and for any other triangulator's.
+///
+/// ```
+/// use polytri::{Nesting, Options, Triangulator};
+/// // a square with a square hole
+/// let vertices = [
+///     [0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0],
+///     [3.0, 3.0], [3.0, 7.0], [7.0, 7.0], [7.0, 3.0],
+/// ];
+/// let ring_starts = [0, 4];
+/// let mut triangles = Vec::new();
+/// Triangulator::<f64>::new()
+///     .triangulate(&vertices, &ring_starts, &Options::default(), &mut triangles)
+///     .expect("a valid polygon");
+/// let verdict = polytri_oracle::verify(&vertices, &ring_starts, Nesting::Auto, &triangles);
+/// assert!(verdict.valid);
+///
+/// // turn one triangle round: the verdict names it
+/// triangles[1].swap(1, 2);
+/// let verdict = polytri_oracle::verify(&vertices, &ring_starts, Nesting::Auto, &triangles);
+/// assert!(!verdict.valid);
+/// let failures = verdict.failures();
+/// assert!(failures[0].starts_with("orientation: triangle 1 "), "{failures:?}");
+/// ```
+pub fn verify<T: polytri::Coord>(
+    vertices: &[[T; 2]],
+    ring_starts: &[usize],
+    nesting: polytri::Nesting,
+    triangles: &[[u32; 3]],
+) -> Verdict {
+    let vertices = vertices
+        .iter()
+        .map(|v| [v[0].to_f64(), v[1].to_f64()])
+        .collect();
+    let nesting = match nesting {
+        polytri::Nesting::FirstIsOuter => Nesting::FirstIsOuter,
+        _ => Nesting::Auto,
+    };
+    check(
+        &Input::new(vertices, ring_starts.to_vec(), nesting),
+        triangles,
+    )
 }
 
 /// Judges `triangles` as a triangulation of `input`, running the checks `opts` asks for.

@@ -4,6 +4,10 @@
 //! test, generates random valid polygons with holes, and runs other triangulators on the
 //! same inputs.
 //!
+//! Its first use outside the harness is [`verify`]: give it any program's triangulation of
+//! a polygon with holes, and it says whether it is one — every triangle inside, none
+//! overlapping, every boundary edge used once — naming the triangle or edge that fails.
+//!
 //! - [`input`]: what is triangulated — rings, ring starts and the nesting convention.
 //! - `check`: the verdict on a triangulation (exact validity, geo's area and containment,
 //!   spade's constrained Delaunay triangulation, quality metrics).
@@ -24,7 +28,8 @@
 //!   (`cargo bench`, `polytri bench --scaling`).
 //!
 //! Nothing here shares predicates with `polytri`: the oracle has its own exact arithmetic
-//! (`exact`, after Shewchuk).
+//! (`exact`, after Shewchuk). It shares one formula, earcut's deviation
+//! ([`polytri::deviation`]), a measure reported beside the verdict.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
@@ -44,7 +49,7 @@ pub mod series;
 pub mod shrink;
 pub mod strategy;
 
-pub use check::{check, check_with, CdtComparison, Check, CheckOptions, Verdict};
+pub use check::{check, check_with, verify, CdtComparison, Check, CheckOptions, Verdict};
 
 /// The item of `all` whose `name` is `s` (trimmed, any case) — the `FromStr` of the
 /// harness's named enums; the error lists the known names after `"unknown {what}"`.

@@ -12,12 +12,13 @@ struct Outcome {
     result: Result<Report, Error>,
 }
 
-/// A `polytri::Report`, owned: triangles, polygons, holes, dropped, repairs.
+/// A `polytri::Report`, owned.
 #[derive(Debug, PartialEq)]
 struct Report {
     triangles: usize,
     polygons: usize,
     holes: usize,
+    deviation: f64,
     dropped: Vec<polytri::Dropped>,
     repairs: Vec<polytri::Repair>,
 }
@@ -53,6 +54,7 @@ fn outcome(triangles: &[[u32; 3]], report: Result<polytri::Report<'_>, Error>) -
             triangles: r.triangles,
             polygons: r.polygons,
             holes: r.holes,
+            deviation: r.deviation,
             dropped: r.dropped.to_vec(),
             repairs: r.repairs.to_vec(),
         }),

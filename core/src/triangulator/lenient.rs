@@ -85,8 +85,17 @@ pub(crate) struct Reruns {
     flagged: Vec<NodeId>,
 }
 
+/// What one call made, besides its triangles.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Outcome {
+    pub polygons: usize,
+    pub holes: usize,
+    /// earcut's deviation of the triangles' area from the input's.
+    pub deviation: f64,
+}
+
 /// Runs the pipeline for one call: once, and on crossing lenient input the reruns the
-/// policy above allows. Returns the numbers of polygons and holes.
+/// policy above allows.
 pub(crate) fn triangulate<T: Coord>(
     cx: &mut Context,
     st: &mut Stages,
@@ -95,14 +104,25 @@ pub(crate) fn triangulate<T: Coord>(
     ring_starts: &[usize],
     options: &Options,
     out: &mut Vec<[u32; 3]>,
-) -> Result<(usize, usize), Error> {
+) -> Result<Outcome, Error> {
     re.careful.bridges = false;
     cx.keep_collinear = false;
     // without `untwist` the pipeline always runs to the end
     let (mut polygons, mut holes) = run(cx, st, re, vertices, ring_starts, options, false, out)?
         .ok_or(Error::Internal { stage: "clean" })?;
     if !cx.lenient || cx.crossings.is_empty() {
-        return Ok((polygons, holes));
+        // a strict result covers the input exactly: its deviation is 0, whatever rounding
+        // the floating-point measure would add
+        let deviation = if cx.lenient {
+            deviation(re.area, vertices, out)
+        } else {
+            0.0
+        };
+        return Ok(Outcome {
+            polygons,
+            holes,
+            deviation,
+        });
     }
     let mut best = re.deviation;
     // Bridges are chosen carefully only where one leaves the polygon, so without that in
@@ -144,7 +164,11 @@ pub(crate) fn triangulate<T: Coord>(
     copy_into(&mut cx.dropped, &re.best_dropped);
     copy_into(&mut cx.repairs, &re.best_repairs);
     re.alt_untwisted = alt;
-    Ok((polygons, holes))
+    Ok(Outcome {
+        polygons,
+        holes,
+        deviation: best,
+    })
 }
 
 /// The whole pipeline once; returns the numbers of polygons and holes. `None` when asked
@@ -209,10 +233,11 @@ fn prepare<T: Coord>(
         return Ok(None);
     }
     let crossing = cx.lenient && !cx.crossings.is_empty();
-    // Every run is measured against the input's area, as earcut measures: untwisting
+    // Every lenient run is measured against the input's area, as earcut measures (the
+    // report's deviation, and on crossing input the choice between runs): untwisting
     // relinks the rings and changes their shoelace sum, so that run keeps the area of
     // the run before it (always one without untwisting).
-    if crossing && !untwist {
+    if cx.lenient && !untwist {
         re.area = signed_area(cx);
     }
     let holes = pipeline::join(cx, st)?;

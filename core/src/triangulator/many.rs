@@ -8,6 +8,7 @@
 //! over a pool of that many threads, each with its own worker (allocated on first use and
 //! kept).
 
+use super::lenient::Outcome;
 use super::{Triangulator, Worker};
 use crate::geom::Coord;
 use crate::report::{Dropped, Repair, Report};
@@ -21,21 +22,23 @@ const PARALLEL_MIN_VERTICES: usize = 4096;
 
 /// One input's outcome, kept so that its [`Report`] can borrow from the triangulator.
 #[derive(Debug, Default)]
-struct Outcome {
+struct Kept {
     /// The error, or `None` when it was triangulated.
     error: Option<Error>,
     polygons: usize,
     holes: usize,
+    deviation: f64,
     triangles: usize,
     dropped: Vec<Dropped>,
     repairs: Vec<Repair>,
 }
 
-impl Outcome {
+impl Kept {
     /// Records what `worker` made of one input.
-    fn record(&mut self, worker: &Worker, result: Result<(usize, usize), Error>, triangles: usize) {
-        self.error = result.err();
-        (self.polygons, self.holes) = result.unwrap_or((0, 0));
+    fn record(&mut self, worker: &Worker, result: Result<Outcome, Error>, triangles: usize) {
+        self.error = result.as_ref().err().copied();
+        (self.polygons, self.holes, self.deviation) =
+            result.map_or((0, 0, 0.0), |o| (o.polygons, o.holes, o.deviation));
         self.triangles = triangles;
         self.dropped.clear();
         self.dropped.extend_from_slice(&worker.cx.dropped);
@@ -50,6 +53,7 @@ impl Outcome {
                 triangles: self.triangles,
                 polygons: self.polygons,
                 holes: self.holes,
+                deviation: self.deviation,
                 dropped: &self.dropped,
                 repairs: &self.repairs,
             }),
@@ -60,7 +64,7 @@ impl Outcome {
 /// The outcomes of the last `triangulate_many` call, and the threads with their workers.
 #[derive(Debug, Default)]
 pub(super) struct Many {
-    outcomes: Vec<Outcome>,
+    outcomes: Vec<Kept>,
     #[cfg(feature = "threads")]
     pool: Option<Pool>,
 }
@@ -121,7 +125,7 @@ impl<T: Coord> Triangulator<T> {
     ) -> Vec<Result<Report<'_>, Error>> {
         out.resize_with(polygons.len(), Vec::new);
         let many = &mut self.many;
-        many.outcomes.resize_with(polygons.len(), Outcome::default);
+        many.outcomes.resize_with(polygons.len(), Kept::default);
         let threads = thread_count(options);
         let work: usize = polygons.iter().map(|(vertices, _)| vertices.len()).sum();
         let done = threads > 1
@@ -137,7 +141,7 @@ impl<T: Coord> Triangulator<T> {
         }
         many.outcomes[..polygons.len()]
             .iter()
-            .map(Outcome::report)
+            .map(Kept::report)
             .collect()
     }
 }

@@ -24,14 +24,14 @@ struct Worker {
 }
 
 impl Worker {
-    /// Triangulates one input into `out`; the numbers of polygons and holes.
+    /// Triangulates one input into `out`; what it made besides triangles.
     fn run<T: Coord>(
         &mut self,
         vertices: &[[T; 2]],
         ring_starts: &[usize],
         options: &Options,
         out: &mut Vec<[u32; 3]>,
-    ) -> Result<(usize, usize), Error> {
+    ) -> Result<lenient::Outcome, Error> {
         let (cx, stages, reruns) = (&mut self.cx, &mut self.stages, &mut self.reruns);
         lenient::triangulate(cx, stages, reruns, vertices, ring_starts, options, out)
     }
@@ -143,11 +143,12 @@ impl<T: Coord> Triangulator<T> {
         options: &Options,
         out: &mut Vec<[u32; 3]>,
     ) -> Result<Report<'_>, Error> {
-        let (polygons, holes) = self.worker.run(vertices, ring_starts, options, out)?;
+        let made = self.worker.run(vertices, ring_starts, options, out)?;
         Ok(Report {
             triangles: out.len(),
-            polygons,
-            holes,
+            polygons: made.polygons,
+            holes: made.holes,
+            deviation: made.deviation,
             dropped: &self.worker.cx.dropped,
             repairs: &self.worker.cx.repairs,
         })

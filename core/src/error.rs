@@ -103,6 +103,14 @@ pub enum Error {
         /// A vertex where the lobe touches the rest of the ring.
         vertex: usize,
     },
+    /// A 3D polygon ([`Triangulator::triangulate_3d`](crate::Triangulator::triangulate_3d))
+    /// is not planar: this vertex lies further from the polygon's plane than
+    /// [`PLANAR_TOLERANCE`](crate::PLANAR_TOLERANCE) times the polygon's size (strict
+    /// mode only).
+    NotPlanar {
+        /// The vertex furthest from the plane.
+        vertex: usize,
+    },
     /// polytri failed where it should not have: **this is a bug, please report it** with the
     /// input at <https://github.com/polytri/polytri/issues>.
     Internal {
@@ -169,6 +177,10 @@ impl fmt::Display for Error {
             Error::RingWindsTwice { ring, vertex } => write!(
                 f,
                 "ring {ring} winds twice: the lobe touching the rest of it at vertex {vertex} lies inside the rest and turns the same way"
+            ),
+            Error::NotPlanar { vertex } => write!(
+                f,
+                "the polygon is not planar: vertex {vertex} lies off its plane by more than the tolerance"
             ),
             Error::Internal { stage } => write!(
                 f,

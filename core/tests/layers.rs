@@ -22,7 +22,7 @@ fn layer(top: &str) -> Option<u32> {
         "context" => 4,
         "stages" => 5,
         "triangulator" => 6,
-        "geo" => 7,
+        "geo" | "planar" => 7,
         _ => return None,
     })
 }

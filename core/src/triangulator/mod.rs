@@ -60,6 +60,8 @@ impl Worker {
 pub struct Triangulator<T: Coord> {
     worker: Worker,
     many: many::Many,
+    /// `triangulate_3d`'s projection of the vertices, kept between calls.
+    projected: Vec<[T; 2]>,
     _coord: PhantomData<fn(T)>,
 }
 
@@ -75,6 +77,7 @@ impl<T: Coord> Triangulator<T> {
         Triangulator {
             worker: Worker::default(),
             many: many::Many::default(),
+            projected: Vec::new(),
             _coord: PhantomData,
         }
     }
@@ -119,6 +122,28 @@ impl<T: Coord> Triangulator<T> {
             false,
         )?;
         Ok(())
+    }
+
+    /// [`Triangulator::triangulate`] on vertices that `fill` writes into the
+    /// triangulator's own buffer (kept between calls): `triangulate_3d`'s projection.
+    pub(crate) fn triangulate_filled(
+        &mut self,
+        fill: impl FnOnce(&mut Vec<[T; 2]>),
+        ring_starts: &[usize],
+        options: &Options,
+        out: &mut Vec<[u32; 3]>,
+    ) -> Result<Report<'_>, Error> {
+        self.projected.clear();
+        fill(&mut self.projected);
+        let made = (self.worker).run(&self.projected, ring_starts, options, out)?;
+        Ok(Report {
+            triangles: out.len(),
+            polygons: made.polygons,
+            holes: made.holes,
+            deviation: made.deviation,
+            dropped: &self.worker.cx.dropped,
+            repairs: &self.worker.cx.repairs,
+        })
     }
 
     /// Triangulates the rings given by `vertices` and `ring_starts`.

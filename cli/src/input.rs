@@ -74,6 +74,9 @@ pub struct Input {
     pub features: Vec<Feature>,
     /// GeoJSON: per polygon, the index of its feature in `features`. Other formats: empty.
     pub polygon_feature: Vec<usize>,
+    /// Per polygon, the z of every point, ring by ring, when every point of it has one
+    /// (rings JSON `[x, y, z]`, GeoJSON positions of three numbers); empty for WKT.
+    pub z: Vec<Option<Vec<Vec<f64>>>>,
     /// Geometries that are not polygons (points, lines, features without geometry), by
     /// type name, with how many of each were skipped.
     pub skipped: BTreeMap<&'static str, usize>,
@@ -86,6 +89,7 @@ impl Input {
             polygons: Vec::new(),
             features: Vec::new(),
             polygon_feature: Vec::new(),
+            z: Vec::new(),
             skipped: BTreeMap::new(),
         }
     }
@@ -203,14 +207,38 @@ fn push_ring(polygon: &mut Polygon, mut ring: Ring) {
     polygon.push(ring);
 }
 
+/// [`push_ring`] for a ring whose points may have z (`z[i]` for point `i`): the closing
+/// point is dropped only where z repeats too (a vertical wall's points repeat in x and y).
+fn push_ring_z(
+    polygon: &mut Polygon,
+    zs: &mut Vec<Vec<Option<f64>>>,
+    mut ring: Ring,
+    mut z: Vec<Option<f64>>,
+) {
+    if ring.len() > 1 && ring.first() == ring.last() && z.first() == z.last() {
+        ring.pop();
+        z.pop();
+    }
+    polygon.push(ring);
+    zs.push(z);
+}
+
+/// One polygon's z values, ring by ring: `None` when some point has no z.
+fn polygon_z(z: Vec<Vec<Option<f64>>>) -> Option<Vec<Vec<f64>>> {
+    z.into_iter()
+        .map(|ring| ring.into_iter().collect())
+        .collect()
+}
+
 // ---------------------------------------------------------------------------------------
 // rings and shapes JSON
 
-/// A JSON point `[x, y, …]`: further coordinates (z, m) are read and ignored.
+/// A JSON point `[x, y, …]`, with its z when a third coordinate is given; further
+/// coordinates (m) are read and ignored.
 ///
 /// Deserialized by hand rather than as `Vec<f64>` so a short point is refused inside
 /// serde, which then reports the line and column.
-struct JsonPoint([f64; 2]);
+struct JsonPoint([f64; 2], Option<f64>);
 
 impl<'de> Deserialize<'de> for JsonPoint {
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
@@ -234,26 +262,36 @@ impl<'de> Visitor<'de> for PointVisitor {
         let y: f64 = seq
             .next_element()?
             .ok_or_else(|| de::Error::invalid_length(1, &self))?;
+        // a third coordinate that is a number is z; null or anything else is no z
+        let z = (seq.next_element::<Value>()?).and_then(|v| v.as_f64());
         while seq.next_element::<IgnoredAny>()?.is_some() {}
-        Ok(JsonPoint([x, y]))
+        Ok(JsonPoint([x, y], z))
     }
 }
 
 type JsonRings = Vec<Vec<JsonPoint>>;
 
-fn json_polygon(rings: JsonRings) -> Polygon {
+fn json_polygon(input: &mut Input, rings: JsonRings) {
     let mut polygon = Polygon::with_capacity(rings.len());
+    let mut z = Vec::with_capacity(rings.len());
     for ring in rings {
-        push_ring(&mut polygon, ring.into_iter().map(|p| p.0).collect());
+        let ring_z = ring.iter().map(|p| p.1).collect();
+        push_ring_z(
+            &mut polygon,
+            &mut z,
+            ring.into_iter().map(|p| p.0).collect(),
+            ring_z,
+        );
     }
-    polygon
+    input.z.push(polygon_z(z));
+    input.polygons.push(polygon);
 }
 
 fn parse_rings(text: &str) -> Result<Input, String> {
     let rings: JsonRings =
         serde_json::from_str(text).map_err(|e| format!("invalid rings JSON: {e}"))?;
     let mut input = Input::new(Format::Rings);
-    input.polygons.push(json_polygon(rings));
+    json_polygon(&mut input, rings);
     Ok(input)
 }
 
@@ -261,7 +299,9 @@ fn parse_shapes(text: &str) -> Result<Input, String> {
     let shapes: Vec<JsonRings> =
         serde_json::from_str(text).map_err(|e| format!("invalid shapes JSON: {e}"))?;
     let mut input = Input::new(Format::Shapes);
-    input.polygons = shapes.into_iter().map(json_polygon).collect();
+    for rings in shapes {
+        json_polygon(&mut input, rings);
+    }
     Ok(input)
 }
 
@@ -273,7 +313,7 @@ fn parse_case(text: &str) -> Result<Input, String> {
     let case: Case =
         serde_json::from_str(text).map_err(|e| format!("invalid corpus case JSON: {e}"))?;
     let mut input = Input::new(Format::Case);
-    input.polygons.push(json_polygon(case.rings));
+    json_polygon(&mut input, case.rings);
     Ok(input)
 }
 
@@ -337,8 +377,10 @@ fn geojson_geometry(input: &mut Input, value: GeometryValue) -> Result<(), Strin
 fn geojson_polygon(input: &mut Input, rings: geojson::PolygonType) -> Result<(), String> {
     let index = input.polygons.len();
     let mut polygon = Polygon::with_capacity(rings.len());
+    let mut z = Vec::with_capacity(rings.len());
     for (r, ring) in rings.into_iter().enumerate() {
         let mut points = Ring::with_capacity(ring.len());
+        let ring_z = ring.iter().map(|p| p.as_slice().get(2).copied()).collect();
         for (v, position) in ring.iter().enumerate() {
             match position.as_slice() {
                 [x, y, ..] => points.push([*x, *y]),
@@ -349,8 +391,9 @@ fn geojson_polygon(input: &mut Input, rings: geojson::PolygonType) -> Result<(),
                 }
             }
         }
-        push_ring(&mut polygon, points);
+        push_ring_z(&mut polygon, &mut z, points, ring_z);
     }
+    input.z.push(polygon_z(z));
     input.polygons.push(polygon);
     // (every polygon is read within a feature, pushed before its geometry)
     input

@@ -27,11 +27,16 @@ pub struct TriangleFeature<'a> {
 pub fn write_geojson<W: Write>(
     mut w: W,
     vertices: &[[f64; 2]],
+    z: Option<&[f64]>,
     features: &[TriangleFeature<'_>],
     per_triangle: bool,
 ) -> io::Result<()> {
     let ring = |t: &[u32; 3]| -> Vec<Vec<f64>> {
-        let p = |i: u32| vertices.get(i as usize).map_or(vec![], |v| v.to_vec());
+        let p = |i: u32| {
+            let mut position = vertices.get(i as usize).map_or(vec![], |v| v.to_vec());
+            position.extend(z.and_then(|z| z.get(i as usize)));
+            position
+        };
         vec![p(t[0]), p(t[1]), p(t[2]), p(t[0])]
     };
     let feature = |f: &TriangleFeature<'_>, value: geojson::GeometryValue| geojson::Feature {
@@ -65,6 +70,47 @@ pub fn write_geojson<W: Write>(
     };
     serde_json::to_writer(&mut w, &collection)?;
     writeln!(w)
+}
+
+/// Writes the result JSON of a 3D input: `{"vertices": [[x, y, z], …], "triangles": …}`.
+pub fn write_json_3d<W: Write>(
+    mut w: W,
+    vertices: &[[f64; 2]],
+    z: &[f64],
+    triangles: &[[u32; 3]],
+) -> io::Result<()> {
+    let vertices: Vec<[f64; 3]> = (vertices.iter().zip(z))
+        .map(|(v, &z)| [v[0], v[1], z])
+        .collect();
+    serde_json::to_writer(
+        &mut w,
+        &serde_json::json!({ "vertices": vertices, "triangles": triangles }),
+    )?;
+    writeln!(w)
+}
+
+/// Writes Wavefront OBJ: a `v x y z` line per vertex (z 0 without `z`), then an `f a b c`
+/// line per triangle (1-based indices, counter-clockwise).
+pub fn write_obj<W: Write>(
+    mut w: W,
+    vertices: &[[f64; 2]],
+    z: Option<&[f64]>,
+    triangles: &[[u32; 3]],
+) -> io::Result<()> {
+    writeln!(
+        w,
+        "# polytri: {} vertices, {} triangles",
+        vertices.len(),
+        triangles.len()
+    )?;
+    for (i, v) in vertices.iter().enumerate() {
+        let z = z.and_then(|z| z.get(i)).copied().unwrap_or(0.0);
+        writeln!(w, "v {} {} {}", v[0], v[1], z)?;
+    }
+    for t in triangles {
+        writeln!(w, "f {} {} {}", t[0] + 1, t[1] + 1, t[2] + 1)?;
+    }
+    Ok(())
 }
 
 /// The result JSON: `{"vertices": [[x, y], …], "triangles": [[a, b, c], …]}`.

@@ -18,7 +18,9 @@ use crate::{output, say, Failure};
 Input formats, recognised from the file: rings JSON [[[x, y], …], …] (first ring outer, \
 the rest holes), shapes JSON (a list of such polygons), GeoJSON (Polygon, MultiPolygon, \
 Feature, FeatureCollection, GeometryCollection) and WKT (POLYGON, MULTIPOLYGON, \
-GEOMETRYCOLLECTION; by content or a .wkt name). Extra coordinates (z, m) are ignored, a \
+GEOMETRYCOLLECTION; by content or a .wkt name). A polygon whose every point has a third \
+coordinate (rings JSON, GeoJSON) is a planar polygon in 3D: triangulated in its own plane, \
+z kept in the output (JSON, OBJ, GeoJSON); further coordinates are ignored. A \
 repeated closing point is dropped, and other geometry types are skipped with a warning.
 
 Output JSON: {\"vertices\": [[x, y], …], \"triangles\": [[a, b, c], …]}, the vertices in \
@@ -93,6 +95,9 @@ pub enum OutputFormat {
     /// A GeoJSON FeatureCollection: per input feature its triangles as a MultiPolygon,
     /// with the feature's id and properties.
     Geojson,
+    /// Wavefront OBJ for graphics tools: `v x y z` lines (z 0 for rings in the plane),
+    /// then `f a b c` faces (1-based).
+    Obj,
 }
 
 /// `--strategy`, mirroring [`polytri::Strategy`] (which is not a clap type).
@@ -153,6 +158,8 @@ impl Args {
             OutputFormat::Svg
         } else if extension("geojson") {
             OutputFormat::Geojson
+        } else if extension("obj") {
+            OutputFormat::Obj
         } else {
             OutputFormat::Json
         })
@@ -188,10 +195,26 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     }
 
     let options = args.options();
+    let z = flat_z(&input, &layout);
+    if z.is_some() && args.merge {
+        return Err(Failure(format!(
+            "{name}: --merge takes rings in the plane; these have z (each polygon is triangulated in its own plane)"
+        )));
+    }
     let pieces = pieces(&layout, args.merge);
-    let results = match args.precision {
-        Precision::F64 => triangulate_pieces(&layout.vertices, &layout, &pieces, &options),
-        Precision::F32 => {
+    let results = match (args.precision, &z) {
+        (Precision::F64, Some(z)) => {
+            triangulate_pieces_3d(&layout.vertices, z, &layout, &pieces, &options)
+        }
+        (Precision::F32, Some(z)) => {
+            let narrow: Vec<[f32; 2]> = (layout.vertices.iter())
+                .map(|v| [v[0] as f32, v[1] as f32])
+                .collect();
+            let narrow_z: Vec<f32> = z.iter().map(|&z| z as f32).collect();
+            triangulate_pieces_3d(&narrow, &narrow_z, &layout, &pieces, &options)
+        }
+        (Precision::F64, None) => triangulate_pieces(&layout.vertices, &layout, &pieces, &options),
+        (Precision::F32, None) => {
             // Rounding is the point of --precision f32; values beyond f32's range become
             // infinite, which the triangulator reports (strict) or drops (lenient).
             let narrow: Vec<[f32; 2]> = layout
@@ -215,7 +238,15 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         ));
     }
     let outcome = Outcome::gather(&results);
-    write_result(args, &input, &layout, &pieces, &results, &outcome)?;
+    write_result(
+        args,
+        &input,
+        &layout,
+        z.as_deref(),
+        &pieces,
+        &results,
+        &outcome,
+    )?;
     if !args.quiet {
         say(format_args!("polytri: {name}: {}", summary(&outcome)));
     }
@@ -360,6 +391,65 @@ fn triangulate_pieces<T: Coord>(
         .collect()
 }
 
+/// The z of every vertex of `layout`, in its order, when every polygon of the file has z
+/// for every point (rings JSON `[x, y, z]`, GeoJSON positions of three numbers).
+fn flat_z(input: &Input, layout: &Layout) -> Option<Vec<f64>> {
+    if input.z.is_empty() || input.z.len() != input.polygons.len() {
+        return None;
+    }
+    let mut flat = Vec::with_capacity(layout.vertices.len());
+    for polygon in &input.z {
+        // (as `Layout::new`: empty rings left out)
+        for ring in polygon.as_ref()? {
+            flat.extend_from_slice(ring);
+        }
+    }
+    (flat.len() == layout.vertices.len()).then_some(flat)
+}
+
+/// [`triangulate_pieces`] for polygons in 3D: each piece through `triangulate_3d`, in its
+/// own plane, its triangles indexing the layout's (3D) vertices.
+fn triangulate_pieces_3d<T: Coord>(
+    vertices: &[[T; 2]],
+    z: &[T],
+    layout: &Layout,
+    pieces: &[(Range<usize>, Range<usize>)],
+    options: &Options,
+) -> Vec<Result<Piece, Refusal>> {
+    let mut tri = Triangulator::<T>::new();
+    let mut out = Vec::new();
+    let mut xyz = Vec::new();
+    pieces
+        .iter()
+        .map(|(rings, span)| {
+            let refusal = |error| Refusal {
+                error,
+                vertex_offset: span.start,
+                ring_offset: rings.start,
+            };
+            xyz.clear();
+            xyz.extend(span.clone().map(|i| [vertices[i][0], vertices[i][1], z[i]]));
+            let starts: Vec<usize> = (layout.ring_starts[rings.clone()].iter())
+                .map(|s| s - span.start)
+                .collect();
+            let (report, _) = tri
+                .triangulate_3d(&xyz, &starts, options, &mut out)
+                .map_err(refusal)?;
+            // Fits: the caller checked that all vertices are addressable by u32.
+            let offset = span.start as u32;
+            Ok(Piece {
+                triangles: out.iter().map(|t| t.map(|i| i + offset)).collect(),
+                polygons: report.polygons,
+                holes: report.holes,
+                dropped: (report.dropped.iter())
+                    .map(|d| d.vertex as usize + span.start)
+                    .collect(),
+                repairs: report.repairs.len(),
+            })
+        })
+        .collect()
+}
+
 /// Says what the triangulator refused and where in the file.
 fn describe_error(refusal: &Refusal, layout: &Layout, precision: Precision) -> String {
     let vertex = |v: usize| layout.describe_vertex(v + refusal.vertex_offset);
@@ -426,21 +516,27 @@ fn describe_error(refusal: &Refusal, layout: &Layout, precision: Precision) -> S
     }
 }
 
+#[allow(clippy::too_many_arguments)] // what was read, what was made, and where it goes
 fn write_result(
     args: &Args,
     input: &Input,
     layout: &Layout,
+    z: Option<&[f64]>,
     pieces: &[(Range<usize>, Range<usize>)],
     results: &[Result<Piece, Refusal>],
     outcome: &Outcome,
 ) -> Result<(), Failure> {
     let write = |w: &mut dyn Write| -> io::Result<()> {
         match args.output_format() {
-            OutputFormat::Json => output::write_json(w, &layout.vertices, &outcome.triangles),
+            OutputFormat::Json => match z {
+                Some(z) => output::write_json_3d(w, &layout.vertices, z, &outcome.triangles),
+                None => output::write_json(w, &layout.vertices, &outcome.triangles),
+            },
+            OutputFormat::Obj => output::write_obj(w, &layout.vertices, z, &outcome.triangles),
             OutputFormat::Svg => output::write_svg(w, layout, &outcome.triangles, &outcome.dropped),
             OutputFormat::Geojson => {
                 let features = features(input, layout, pieces, results, args.merge);
-                output::write_geojson(w, &layout.vertices, &features, args.per_triangle)
+                output::write_geojson(w, &layout.vertices, z, &features, args.per_triangle)
             }
         }
     };

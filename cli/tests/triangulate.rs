@@ -629,3 +629,47 @@ fn per_triangle_features_keep_their_properties() {
         .all(|f| f["id"] == "sq" && f["properties"]["name"] == "Square"));
     assert!(features.iter().all(|f| f["geometry"]["type"] == "Polygon"));
 }
+
+#[test]
+fn a_wall_in_3d_keeps_its_z_in_json_obj_and_geojson() {
+    let dir = scratch("wall_3d");
+    // a wall in the plane x = 2, with a window
+    let wall = "[[[2,0,0],[2,6,0],[2,6,3],[2,0,3]], [[2,2,1],[2,2,2],[2,4,2],[2,4,1]]]";
+    let file = write(&dir, "wall.json", wall);
+    let (json, stderr) = triangulate(&file, &[]);
+    assert!(stderr.contains("8 triangles"), "{stderr}");
+    let v = json["vertices"].as_array().expect("vertices");
+    assert_eq!(v[2], serde_json::json!([2.0, 6.0, 3.0]));
+    assert_eq!(triangles(&json).len(), 8);
+    // OBJ: every vertex with its z, faces 1-based
+    let obj = dir.join("wall.obj");
+    let out = polytri(&[
+        "triangulate",
+        file.to_str().expect("utf-8"),
+        "-o",
+        obj.to_str().expect("utf-8"),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&obj).expect("obj");
+    assert_eq!(text.lines().filter(|l| l.starts_with("v ")).count(), 8);
+    assert!(text.lines().any(|l| l == "v 2 6 3"), "{text}");
+    let faces: Vec<&str> = text.lines().filter(|l| l.starts_with("f ")).collect();
+    assert_eq!(faces.len(), 8);
+    assert!(faces.iter().all(|f| !f.split(' ').any(|i| i == "0")));
+    // a bent wall is refused, or triangulated anyway with --lenient
+    let bent = "[[[2,0,0],[2,6,0],[2,6,3],[2.5,0,3]]]";
+    let file = write(&dir, "bent.json", bent);
+    assert!(refused(&file, &[]).contains("not planar"));
+    let (json, _) = triangulate(&file, &["--lenient"]);
+    assert_eq!(triangles(&json).len(), 2);
+    // GeoJSON positions of three numbers
+    let text = collection(&[("w", "Wall", "[[[2,0,0],[2,6,0],[2,6,3],[2,0,3],[2,0,0]]]")]);
+    let file = write(&dir, "wall.geojson", &text);
+    let (json, _) = triangulate(&file, &["--format", "geojson"]);
+    let first = &json["features"][0]["geometry"]["coordinates"][0][0][0];
+    assert_eq!(first.as_array().map(Vec::len), Some(3));
+}

@@ -19,8 +19,10 @@ INPUT is read like `polytri triangulate` reads it. RESULT is result JSON, \
 {\"vertices\": [[x, y], …], \"triangles\": [[a, b, c], …]}, as `polytri triangulate -o` \
 writes it: its vertices must be INPUT's points in file order, and the triangles index them.
 
-The verdict is printed as JSON on standard output: every check with a detail naming the \
-first offending triangle or edge (vertex indices into RESULT's vertices), the expected \
+Each polygon is judged on its own, with the triangles on its vertices (--merge: all rings \
+together, as `triangulate --merge` makes them). The verdict is printed as JSON on standard \
+output: every check with a detail naming the first offending triangle or edge (with \
+several polygons: \"polygon P: …\", triangles and vertices counted within polygon P), the expected \
 triangle count, earcut's deviation, quality metrics and spade's constrained Delaunay \
 triangulation for comparison. Exit status: 0 when valid, 1 when not (the failed checks \
 are named on standard error) or when a file cannot be read, 2 on bad usage.")]
@@ -33,23 +35,30 @@ pub struct Args {
     #[arg(value_name = "RESULT")]
     pub result: PathBuf,
 
-    /// Which rings are holes: each polygon's first ring is outer and the others its holes
-    /// (polygons, as the file says), or containment decides (auto)
-    #[arg(long, value_enum, default_value_t = NestingArg::Polygons)]
+    /// Which rings of a polygon are holes: by containment (auto: any order and winding),
+    /// or its first ring is the outer boundary and the others its holes (first-outer) — as
+    /// `polytri triangulate` reads them
+    #[arg(long, value_enum, default_value_t = NestingArg::Auto)]
     pub nesting: NestingArg,
+
+    /// Judge all rings of the file together, as one set of rings, instead of each polygon
+    /// on its own (as `polytri triangulate --merge` triangulates them)
+    #[arg(long)]
+    pub merge: bool,
 
     /// Only the exact checks and metrics: skip geo's tests and spade's triangulation
     #[arg(long)]
     pub fast: bool,
 }
 
-/// `--nesting`.
+/// `--nesting`, as `polytri triangulate` takes it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum NestingArg {
-    /// Each polygon's first ring is outer, the rest are its holes.
-    Polygons,
     /// Containment depth decides: even outer, odd hole.
     Auto,
+    /// Each polygon's first ring is outer, the rest are its holes.
+    #[value(alias = "polygons")]
+    FirstOuter,
 }
 
 /// Result JSON as read: non-finite vertices were written as `null`.
@@ -70,13 +79,20 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     let layout = Layout::new(&input.polygons);
     let result = read_result(&args.result)?;
     compare_vertices(args, &layout.vertices, &result.vertices)?;
-    let oracle_input = to_oracle(&layout, args.nesting);
     let options = if args.fast {
         CheckOptions::fast()
     } else {
         CheckOptions::full()
     };
-    let verdict = check_with(&oracle_input, &result.triangles, &options);
+    let verdict = if args.merge {
+        check_with(
+            &to_oracle(&layout, args.nesting),
+            &result.triangles,
+            &options,
+        )
+    } else {
+        check_each_polygon(&layout, args.nesting, &result.triangles, &options)
+    };
     print_verdict(&verdict)?;
     if verdict.valid {
         Ok(())
@@ -134,11 +150,134 @@ fn compare_vertices(
     Ok(())
 }
 
-/// The file's polygons as the oracle's input.
+/// Judges each polygon of the file on its own, with the triangles whose corners are all
+/// its vertices (a triangle joining two polygons fails `indices`), and sums the verdicts
+/// up: valid when every polygon's is, each failed check naming its polygon.
+fn check_each_polygon(
+    layout: &Layout,
+    nesting: NestingArg,
+    triangles: &[[u32; 3]],
+    options: &CheckOptions,
+) -> Verdict {
+    let mut verdicts = Vec::new();
+    let mut joining = Vec::new();
+    let polygon_of = |v: u32| {
+        (0..layout.polygon_rings.len())
+            .find(|&p| layout.polygon_vertices(p).contains(&(v as usize)))
+    };
+    let mut by_polygon: Vec<Vec<[u32; 3]>> = vec![Vec::new(); layout.polygon_rings.len()];
+    for (k, t) in triangles.iter().enumerate() {
+        match t.map(polygon_of) {
+            [Some(a), Some(b), Some(c)] if a == b && b == c => {
+                let first = layout.polygon_vertices(a).start as u32;
+                by_polygon[a].push(t.map(|v| v - first));
+            }
+            _ => joining.push(k),
+        }
+    }
+    for (p, triangles) in by_polygon.iter().enumerate() {
+        let rings = layout.polygon_rings[p].clone();
+        let span = layout.polygon_vertices(p);
+        if rings.is_empty() {
+            continue;
+        }
+        let starts = (layout.ring_starts[rings.clone()].iter())
+            .map(|s| s - span.start)
+            .collect();
+        let nesting = match nesting {
+            NestingArg::Auto => Nesting::Auto,
+            NestingArg::FirstOuter => Nesting::FirstIsOuter,
+        };
+        let input = OracleInput::new(layout.vertices[span].to_vec(), starts, nesting);
+        verdicts.push((p, check_with(&input, triangles, options)));
+    }
+    let mut verdict = sum_verdicts(&verdicts, layout.polygon_rings.len() > 1);
+    if let Some(&k) = joining.first() {
+        verdict.valid = false;
+        verdict.triangles += joining.len();
+        verdict.checks.insert(
+            0,
+            polytri_oracle::Check {
+                name: "indices".to_owned(),
+                passed: false,
+                detail: Some(format!(
+                    "triangle {k} {:?} joins vertices of different polygons (and {} more)",
+                    triangles[k],
+                    joining.len() - 1
+                )),
+            },
+        );
+    }
+    verdict
+}
+
+/// One verdict for several polygons': every check passes where it passes for all (a
+/// failure's detail names its polygon when there are several, its numbers counted within
+/// that polygon), counts and spade's CDT add up, the deviation and worst aspect are the
+/// largest, the smallest angles the smallest.
+fn sum_verdicts(verdicts: &[(usize, Verdict)], several: bool) -> Verdict {
+    let Some((_, first)) = verdicts.first() else {
+        return check_with(
+            &OracleInput::new(Vec::new(), Vec::new(), Nesting::Auto),
+            &[],
+            &CheckOptions::fast(),
+        );
+    };
+    let mut sum = first.clone();
+    sum.cdt = None;
+    for check in &mut sum.checks {
+        check.passed = true;
+        check.detail = None;
+    }
+    sum.triangles = 0;
+    sum.expected_triangles = Some(0);
+    sum.total_edge_length = 0.0;
+    for (p, v) in verdicts {
+        sum.valid &= v.valid;
+        sum.input_valid &= v.input_valid;
+        sum.triangles += v.triangles;
+        sum.expected_triangles = sum
+            .expected_triangles
+            .zip(v.expected_triangles)
+            .map(|(a, b)| a + b);
+        sum.deviation = sum.deviation.max(v.deviation);
+        sum.min_angle_deg = sum.min_angle_deg.min(v.min_angle_deg);
+        sum.worst_aspect = sum.worst_aspect.max(v.worst_aspect);
+        sum.total_edge_length += v.total_edge_length;
+        sum.cdt = match (sum.cdt.take(), &v.cdt) {
+            (None, Some(c)) if *p == verdicts[0].0 => Some(c.clone()),
+            (Some(s), Some(c)) => Some(polytri_oracle::CdtComparison {
+                triangles: s.triangles + c.triangles,
+                area: s.area + c.area,
+                min_angle_deg: s.min_angle_deg.min(c.min_angle_deg),
+            }),
+            _ => None,
+        };
+        for check in &v.checks {
+            match sum.checks.iter_mut().find(|c| c.name == check.name) {
+                Some(c) if c.passed && !check.passed => {
+                    c.passed = false;
+                    c.detail = check.detail.as_ref().map(|d| {
+                        if several {
+                            format!("polygon {p}: {d}")
+                        } else {
+                            d.clone()
+                        }
+                    });
+                }
+                Some(_) => {}
+                None => sum.checks.push(check.clone()),
+            }
+        }
+    }
+    sum
+}
+
+/// The file's polygons as the oracle's input, all together (`--merge`).
 fn to_oracle(layout: &Layout, nesting: NestingArg) -> OracleInput {
     let nesting = match nesting {
         NestingArg::Auto => Nesting::Auto,
-        NestingArg::Polygons => Nesting::Roles(
+        NestingArg::FirstOuter => Nesting::Roles(
             layout
                 .ring_origins
                 .iter()
@@ -168,7 +307,7 @@ mod tests {
         let square = vec![[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]];
         let hole = vec![[1.0, 1.0], [1.0, 2.0], [2.0, 2.0]];
         let layout = Layout::new(&[vec![square.clone(), vec![], hole], vec![square]]);
-        let oracle = to_oracle(&layout, NestingArg::Polygons);
+        let oracle = to_oracle(&layout, NestingArg::FirstOuter);
         assert_eq!(
             oracle.nesting,
             Nesting::Roles(vec![Role::Outer, Role::Hole, Role::Outer])

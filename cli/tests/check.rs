@@ -93,7 +93,11 @@ fn rejects_a_broken_result_naming_the_check() {
     assert_eq!(verdict["valid"], false);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(stderr.lines().count(), 1, "{stderr}");
-    assert!(stderr.contains("orientation: triangle 0"), "{stderr}");
+    // judged polygon by polygon: the failure names its polygon
+    assert!(
+        stderr.contains("orientation: polygon 0: triangle 0"),
+        "{stderr}"
+    );
 }
 
 #[test]
@@ -114,4 +118,50 @@ fn says_when_the_result_is_of_another_input() {
     assert!(stderr.contains("vertex 0"), "{stderr}");
     let usage = polytri(&[path("check"), &input]);
     assert_eq!(usage.status.code(), Some(2));
+}
+
+#[test]
+fn each_polygon_is_judged_on_its_own() {
+    let dir = scratch("per_polygon");
+    // two overlapping squares, as neighbouring features of a layer often are
+    let input = write(
+        &dir,
+        "layer.json",
+        "[[[[0,0],[10,0],[10,10],[0,10]]], [[[9,-1],[20,-1],[20,11],[9,11]]]]",
+    );
+    let result = dir.join("result.json");
+    let out = polytri(&[
+        path("triangulate"),
+        &input,
+        path("-o"),
+        &result,
+        path("--quiet"),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(polytri(&[path("check"), &input, &result]).status.success());
+    // judged together, the overlap is an error
+    let merged = polytri(&[
+        path("check"),
+        &input,
+        &result,
+        path("--merge"),
+        path("--fast"),
+    ]);
+    assert_eq!(merged.status.code(), Some(1));
+    // a triangle joining the two polygons' vertices is no triangle of either
+    let mut json: Value =
+        serde_json::from_str(&fs::read_to_string(&result).expect("read")).expect("JSON");
+    json["triangles"][0] = serde_json::json!([0, 1, 4]);
+    let joined = write(&dir, "joined.json", &json.to_string());
+    let out = polytri(&[path("check"), &input, &joined, path("--fast")]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("indices: triangle 0 [0, 1, 4] joins vertices of different polygons"),
+        "{stderr}"
+    );
 }

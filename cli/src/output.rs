@@ -228,6 +228,7 @@ pub fn write_svg<W: Write>(
     mut w: W,
     layout: &Layout,
     triangles: &[[u32; 3]],
+    groups: Option<&[usize]>,
     dropped: &[usize],
 ) -> io::Result<()> {
     let frame = Frame::fit(&layout.vertices);
@@ -247,7 +248,13 @@ pub fn write_svg<W: Write>(
     writeln!(w, "<style>\n{STYLE}\n</style>")?;
 
     writeln!(w, r#"<g class="triangles">"#)?;
-    for t in triangles {
+    for (k, t) in triangles.iter().enumerate() {
+        // one colour per group (a county of a layer): hues a golden angle apart
+        let colour = groups.and_then(|g| g.get(k)).map(|&g| {
+            let hue = (g as f64 * 137.508) % 360.0;
+            format!(r#" style="fill:hsl({hue:.0},55%,72%)""#)
+        });
+        let colour = colour.as_deref().unwrap_or("");
         let corners = [
             point(t[0] as usize),
             point(t[1] as usize),
@@ -256,7 +263,7 @@ pub fn write_svg<W: Write>(
         if let [Some(a), Some(b), Some(c)] = corners {
             writeln!(
                 w,
-                r#"<polygon class="tri" points="{},{} {},{} {},{}"/>"#,
+                r#"<polygon class="tri"{colour} points="{},{} {},{} {},{}"/>"#,
                 num(a.0),
                 num(a.1),
                 num(b.0),

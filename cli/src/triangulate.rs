@@ -225,7 +225,13 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             triangulate_pieces(&narrow, &layout, &pieces, &options)
         }
     };
-    let describe = |refused: &Refusal| describe_error(refused, &layout, args.precision);
+    let describe = |refused: &Refusal| {
+        let what = describe_error(refused, &layout, args.precision);
+        match feature_of(&input, &layout, refused.ring_offset) {
+            Some(feature) => format!("{feature}: {what}"),
+            None => what,
+        }
+    };
     let failed: Vec<&Refusal> = results.iter().filter_map(|r| r.as_ref().err()).collect();
     if let Some(first) = failed.first().filter(|_| !args.keep_going) {
         return Err(Failure(format!("{name}: {}", describe(first))));
@@ -533,7 +539,16 @@ fn write_result(
                 None => output::write_json(w, &layout.vertices, &outcome.triangles),
             },
             OutputFormat::Obj => output::write_obj(w, &layout.vertices, z, &outcome.triangles),
-            OutputFormat::Svg => output::write_svg(w, layout, &outcome.triangles, &outcome.dropped),
+            OutputFormat::Svg => {
+                let groups = groups(input, layout, pieces, results);
+                output::write_svg(
+                    w,
+                    layout,
+                    &outcome.triangles,
+                    groups.as_deref(),
+                    &outcome.dropped,
+                )
+            }
             OutputFormat::Geojson => {
                 let features = features(input, layout, pieces, results, args.merge);
                 output::write_geojson(w, &layout.vertices, z, &features, args.per_triangle)
@@ -549,6 +564,50 @@ fn write_result(
         None => write(&mut BufWriter::new(io::stdout().lock()))
             .map_err(|e| Failure(format!("cannot write to standard output: {e}"))),
     }
+}
+
+/// "feature F (id X)" for the GeoJSON feature holding flat ring `ring`.
+fn feature_of(input: &Input, layout: &Layout, ring: usize) -> Option<String> {
+    let polygon = layout.ring_origins.get(ring)?.polygon;
+    let f = *input.polygon_feature.get(polygon)?;
+    let id = input
+        .features
+        .get(f)
+        .and_then(|feature| feature.id.as_ref());
+    Some(match id {
+        Some(geojson::feature::Id::String(id)) => format!("feature {f} (id {id:?})"),
+        Some(geojson::feature::Id::Number(id)) => format!("feature {f} (id {id})"),
+        None => format!("feature {f}"),
+    })
+}
+
+/// With several polygons, each triangle's group for colouring a picture: its input
+/// feature (GeoJSON), else its polygon; in the order `Outcome::gather` lists them.
+fn groups(
+    input: &Input,
+    layout: &Layout,
+    pieces: &[(Range<usize>, Range<usize>)],
+    results: &[Result<Piece, Refusal>],
+) -> Option<Vec<usize>> {
+    if pieces.len() < 2 {
+        return None;
+    }
+    let mut groups = Vec::new();
+    for ((rings, _), result) in pieces.iter().zip(results) {
+        if let Ok(piece) = result {
+            let polygon = layout
+                .ring_origins
+                .get(rings.start)
+                .map_or(0, |o| o.polygon);
+            let group = input
+                .polygon_feature
+                .get(polygon)
+                .copied()
+                .unwrap_or(polygon);
+            groups.extend(std::iter::repeat_n(group, piece.triangles.len()));
+        }
+    }
+    Some(groups)
 }
 
 /// The output features: per input feature (GeoJSON) or polygon (other formats) whose every

@@ -673,3 +673,55 @@ fn a_wall_in_3d_keeps_its_z_in_json_obj_and_geojson() {
     let first = &json["features"][0]["geometry"]["coordinates"][0][0][0];
     assert_eq!(first.as_array().map(Vec::len), Some(3));
 }
+
+#[test]
+fn a_county_layer_by_the_defaults() {
+    // the worked example of docs/gis: 254 counties, each triangulated on its own
+    let layer = Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/gis/texas-counties.geojson");
+    let dir = scratch("county_layer");
+    let result = dir.join("texas.json");
+    let out = polytri(&[
+        "triangulate",
+        layer.to_str().expect("utf-8"),
+        "-o",
+        result.to_str().expect("utf-8"),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // the oracle, county by county: every county's triangles exactly cover it
+    let out = polytri(&[
+        "check",
+        layer.to_str().expect("utf-8"),
+        result.to_str().expect("utf-8"),
+        "--fast",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let verdict: Value = serde_json::from_slice(&out.stdout).expect("verdict");
+    assert_eq!(verdict["valid"], true);
+    assert_eq!(verdict["triangles"], verdict["expected_triangles"]);
+    // GeoJSON out: one feature per county, in order, with its id and properties
+    let (json, _) = triangulate(&layer, &["--format", "geojson"]);
+    let input: Value =
+        serde_json::from_str(&std::fs::read_to_string(&layer).expect("layer")).expect("JSON");
+    let ids = |v: &Value| -> Vec<Value> {
+        v["features"]
+            .as_array()
+            .expect("features")
+            .iter()
+            .map(|f| f["id"].clone())
+            .collect()
+    };
+    assert_eq!(ids(&json).len(), 254);
+    assert_eq!(ids(&json), ids(&input));
+    assert_eq!(
+        json["features"][0]["properties"],
+        input["features"][0]["properties"]
+    );
+}

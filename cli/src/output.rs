@@ -361,7 +361,7 @@ mod tests {
         ]];
         let layout = Layout::new(&polygons);
         let mut out = Vec::new();
-        write_svg(&mut out, &layout, &[[0, 1, 4], [9, 9, 9]], &[5]).expect("in memory");
+        write_svg(&mut out, &layout, &[[0, 1, 4], [9, 9, 9]], None, &[5]).expect("in memory");
         let text = String::from_utf8(out).expect("utf-8");
         assert!(text.starts_with("<svg "), "{text}");
         assert!(text.trim_end().ends_with("</svg>"));

@@ -376,4 +376,27 @@ mod tests {
             "{text}"
         );
     }
+
+    #[test]
+    fn svg_colours_each_group() {
+        let square = vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+        let layout = Layout::new(&[vec![square]]);
+        let fill = |groups: Option<&[usize]>| {
+            let mut out = Vec::new();
+            write_svg(&mut out, &layout, &[[0, 1, 2], [0, 2, 3]], groups, &[]).expect("in memory");
+            let text = String::from_utf8(out).expect("utf-8");
+            let fills: Vec<String> = text
+                .split("fill:hsl(")
+                .skip(1)
+                .map(|f| f[..f.find(')').unwrap_or(0)].to_owned())
+                .collect();
+            fills
+        };
+        let two = fill(Some(&[0, 1]));
+        assert_eq!(two.len(), 2);
+        assert_ne!(two[0], two[1]);
+        let one = fill(Some(&[3, 3]));
+        assert_eq!(one[0], one[1]);
+        assert!(fill(None).is_empty());
+    }
 }

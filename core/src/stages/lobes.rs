@@ -45,6 +45,21 @@ use crate::geom::{cmp_around, cmp_xy, Point};
 use crate::structures::NodeId;
 use core::cmp::Ordering;
 
+/// An edge end at a position a ring passes several times.
+#[derive(Clone, Copy, Debug)]
+struct EdgeEnd {
+    /// The edge's other end.
+    far: Point,
+    /// Orders edges lying on one another (the edge's first node).
+    lane: u32,
+    /// The edge arrives at the position (else it leaves).
+    arrives: bool,
+    /// The visit (chord) it belongs to.
+    chord: u32,
+    /// The edge, by its first node.
+    edge: NodeId,
+}
+
 /// Scratch buffers of the lobe split, kept between calls.
 #[derive(Debug, Default)]
 pub(crate) struct Scratch {
@@ -55,9 +70,8 @@ pub(crate) struct Scratch {
     visits: Vec<u32>,
     /// The positions the ring being split passes more than once.
     pinches: Vec<u32>,
-    /// The edge ends at one position: the far end, the lane, whether the edge arrives,
-    /// the visit (chord) it belongs to, and the edge (its first node).
-    ends: Vec<(Point, u32, bool, u32, NodeId)>,
+    /// The edge ends at one position, sorted around it.
+    ends: Vec<EdgeEnd>,
     /// Open chords, or the ends of arriving edges, while pairing the ends at one position.
     stack: Vec<u32>,
     /// New links: (edge arriving, by its first node; node whose edge leaves next).
@@ -255,15 +269,25 @@ fn sorted_ends(cx: &Context, s: &mut Scratch, g: usize, r: u32) -> Point {
         let (prev, next) = (node.prev, node.next);
         let visit = s.at.len() as u32;
         s.at.push(m);
-        s.ends
-            .push((cx.pool.p(prev), prev.idx() as u32, true, visit, prev));
-        s.ends
-            .push((cx.pool.p(next), m.idx() as u32, false, visit, m));
+        s.ends.push(EdgeEnd {
+            far: cx.pool.p(prev),
+            lane: prev.idx() as u32,
+            arrives: true,
+            chord: visit,
+            edge: prev,
+        });
+        s.ends.push(EdgeEnd {
+            far: cx.pool.p(next),
+            lane: m.idx() as u32,
+            arrives: false,
+            chord: visit,
+            edge: m,
+        });
     }
     s.ends.sort_unstable_by(|a, b| {
-        cmp_around(o, a.0, b.0).then_with(|| match cmp_xy(o, a.0) {
-            Ordering::Less => b.1.cmp(&a.1),
-            _ => a.1.cmp(&b.1),
+        cmp_around(o, a.far, b.far).then_with(|| match cmp_xy(o, a.far) {
+            Ordering::Less => b.lane.cmp(&a.lane),
+            _ => a.lane.cmp(&b.lane),
         })
     });
     o
@@ -271,9 +295,9 @@ fn sorted_ends(cx: &Context, s: &mut Scratch, g: usize, r: u32) -> Point {
 
 /// Whether the chords the ends belong to nest like brackets (read from any start): that
 /// is, whether no two cross.
-fn nested(ends: &[(Point, u32, bool, u32, NodeId)], stack: &mut Vec<u32>) -> bool {
+fn nested(ends: &[EdgeEnd], stack: &mut Vec<u32>) -> bool {
     stack.clear();
-    for &(_, _, _, chord, _) in ends {
+    for &EdgeEnd { chord, .. } in ends {
         if stack.last() == Some(&chord) {
             stack.pop();
         } else {
@@ -294,7 +318,7 @@ fn repair(cx: &Context, s: &mut Scratch, g: usize, r: u32) {
     // every leaving edge finds an arriving edge open
     let (mut sum, mut lowest, mut from) = (0i64, 0i64, 0);
     for (k, e) in s.ends.iter().enumerate() {
-        sum += if e.2 { 1 } else { -1 };
+        sum += if e.arrives { 1 } else { -1 };
         if sum < lowest {
             (lowest, from) = (sum, k + 1);
         }
@@ -303,11 +327,11 @@ fn repair(cx: &Context, s: &mut Scratch, g: usize, r: u32) {
     let count = s.ends.len();
     for k in 0..count {
         let at = (from + k) % count;
-        let (_, _, arrives, _, edge) = s.ends[at];
+        let EdgeEnd { arrives, edge, .. } = s.ends[at];
         if arrives {
             s.stack.push(at as u32);
         } else if let Some(a) = s.stack.pop() {
-            s.pairs.push((s.ends[a as usize].4, edge));
+            s.pairs.push((s.ends[a as usize].edge, edge));
         }
     }
 }
@@ -329,8 +353,8 @@ fn cut(cx: &mut Context, s: &mut Scratch, g: usize, r: u32) -> bool {
     s.arrival.clear();
     s.arrival.resize(k, 0);
     for (e, end) in s.ends.iter().enumerate() {
-        if end.2 {
-            s.arrival[end.3 as usize] = e as u32;
+        if end.arrives {
+            s.arrival[end.chord as usize] = e as u32;
         }
     }
     let mut any = false;
@@ -342,11 +366,11 @@ fn cut(cx: &mut Context, s: &mut Scratch, g: usize, r: u32) -> bool {
             }
             // each visit takes the other's arriving edge
             let (ai, aj) = (s.arrival[i] as usize, s.arrival[j] as usize);
-            s.ends[ai].3 = j as u32;
-            s.ends[aj].3 = i as u32;
+            s.ends[ai].chord = j as u32;
+            s.ends[aj].chord = i as u32;
             if !nested(&s.ends, &mut s.stack) {
-                s.ends[ai].3 = i as u32;
-                s.ends[aj].3 = j as u32;
+                s.ends[ai].chord = i as u32;
+                s.ends[aj].chord = j as u32;
                 continue;
             }
             s.arrival.swap(i, j);

@@ -39,11 +39,12 @@ mod repair;
 use ear::{bounds, interferes, near};
 use queue::{ear, ear_node, EarQueue};
 
-/// The fuzzing issue's experiment, never enabled otherwise: with the `planted-bug` feature
-/// the ear test (unindexed, as for small rings) misses reflex vertices on the right edge
-/// of the ear's bounding box (an off-by-one, `<` for `<=`), and the fuzz targets must find
-/// it (see the README).
-const PLANTED_BUG: bool = cfg!(feature = "planted-bug");
+/// The fuzzing experiment, never enabled otherwise: built with
+/// `RUSTFLAGS="--cfg polytri_planted_bug"`, the ear test (unindexed, as for small rings)
+/// misses reflex vertices on the right edge of the ear's bounding box (an off-by-one, `<`
+/// for `<=`), and the fuzz targets must find it (see `docs/harness.md`). A cfg rather than
+/// a feature, so that `--all-features` never plants it.
+const PLANTED_BUG: bool = cfg!(polytri_planted_bug);
 
 /// Polygons with fewer reflex vertices than this scan them all in an ear test; more, and
 /// building the grid pays (earcut's threshold is 80 vertices in all).

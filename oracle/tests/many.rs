@@ -154,3 +154,35 @@ fn no_inputs_give_no_results() {
     let results = tri.triangulate_many(&[], &Options::default().with_threads(0), &mut out);
     assert!(results.is_empty() && out.is_empty());
 }
+
+/// The whole regression corpus through `triangulate_many` on two threads gives each case
+/// what `triangulate` gives it alone, in strict and lenient mode, each case with its own
+/// nesting convention (one call per convention).
+#[test]
+fn the_corpus_on_two_threads_equals_one_by_one() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../corpus");
+    let mut cases = Vec::new();
+    for folder in ["earcut", "datasets", "paper", "cases"] {
+        let loaded = polytri_oracle::replay::load_dir(&root.join(folder))
+            .unwrap_or_else(|e| panic!("corpus/{folder}: {e}"));
+        cases.extend(loaded.into_iter().map(|c| c.input));
+    }
+    assert!(cases.len() > 100, "{} corpus cases", cases.len());
+    let mut tri = Triangulator::<f64>::new();
+    for nesting in [polytri::Nesting::Auto, polytri::Nesting::FirstIsOuter] {
+        let inputs: Vec<Input> = (cases.iter())
+            .filter(|c| c.nesting.to_polytri().unwrap_or(polytri::Nesting::Auto) == nesting)
+            .cloned()
+            .collect();
+        for lenient in [false, true] {
+            let options = Options::default()
+                .with_nesting(nesting)
+                .with_lenient(lenient);
+            let reference = one_by_one(&inputs, &options);
+            let got = many(&mut tri, &inputs, &options.with_threads(2));
+            for (k, (got, want)) in got.iter().zip(&reference).enumerate() {
+                assert_eq!(got, want, "case {k}, {options:?}");
+            }
+        }
+    }
+}

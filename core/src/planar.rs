@@ -267,3 +267,32 @@ mod tests {
         );
     }
 }
+
+#[cfg(test)]
+mod garbage {
+    use super::*;
+    use crate::testing::random;
+
+    /// Whatever the input — NaN, infinities, huge and tiny values, repeated points, bad
+    /// ring starts — `triangulate_3d` returns, and a result's triangles index the input.
+    #[test]
+    fn never_panics() {
+        let mut next = random(0x3d_3d_3d);
+        let values = [0.0, 1.0, -1.0, 0.5, 1e300, -1e-300, f64::NAN, f64::INFINITY, 3.0, 7.0];
+        let mut tri = Triangulator::<f64>::new();
+        let mut out = Vec::new();
+        for case in 0..3000 {
+            let n = next(12) as usize;
+            let vertices: Vec<[f64; 3]> = (0..n)
+                .map(|_| [0; 3].map(|_| values[next(values.len() as u64) as usize]))
+                .collect();
+            let starts: Vec<usize> = (0..next(4)).map(|_| next(14) as usize).collect();
+            let options = Options::default().with_lenient(case % 2 == 1);
+            if let Ok((report, projection)) = tri.triangulate_3d(&vertices, &starts, &options, &mut out) {
+                assert_eq!(report.triangles, out.len());
+                assert!(out.iter().flatten().all(|&i| (i as usize) < n));
+                assert!(projection.dropped < 3);
+            }
+        }
+    }
+}

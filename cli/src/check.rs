@@ -21,8 +21,8 @@ writes it: its vertices must be INPUT's points in file order, and the triangles 
 
 Each polygon is judged on its own, with the triangles on its vertices (--merge: all rings \
 together, as `triangulate --merge` makes them). The verdict is printed as JSON on standard \
-output: every check with a detail naming the first offending triangle or edge (with \
-several polygons: \"polygon P: …\", triangles and vertices counted within polygon P), the expected \
+output: every check with a detail naming the first offending triangle or edge, in RESULT's \
+numbers (with several polygons: \"polygon P: …\"), the expected \
 triangle count, earcut's deviation, quality metrics and spade's constrained Delaunay \
 triangulation for comparison. Exit status: 0 when valid, 1 when not (the failed checks \
 are named on standard error) or when a file cannot be read, 2 on bad usage.")]
@@ -166,11 +166,14 @@ fn check_each_polygon(
             .find(|&p| layout.polygon_vertices(p).contains(&(v as usize)))
     };
     let mut by_polygon: Vec<Vec<[u32; 3]>> = vec![Vec::new(); layout.polygon_rings.len()];
+    // each polygon's triangles' numbers in RESULT
+    let mut numbers: Vec<Vec<usize>> = vec![Vec::new(); layout.polygon_rings.len()];
     for (k, t) in triangles.iter().enumerate() {
         match t.map(polygon_of) {
             [Some(a), Some(b), Some(c)] if a == b && b == c => {
                 let first = layout.polygon_vertices(a).start as u32;
                 by_polygon[a].push(t.map(|v| v - first));
+                numbers[a].push(k);
             }
             _ => joining.push(k),
         }
@@ -188,8 +191,15 @@ fn check_each_polygon(
             NestingArg::Auto => Nesting::Auto,
             NestingArg::FirstOuter => Nesting::FirstIsOuter,
         };
-        let input = OracleInput::new(layout.vertices[span].to_vec(), starts, nesting);
-        verdicts.push((p, check_with(&input, triangles, options)));
+        let input = OracleInput::new(layout.vertices[span.clone()].to_vec(), starts, nesting);
+        let mut verdict = check_with(&input, triangles, options);
+        // the details in RESULT's numbers: triangles, vertices and rings of the file
+        for check in &mut verdict.checks {
+            if let Some(detail) = &mut check.detail {
+                *detail = file_numbers(detail, &numbers[p], span.start, rings.start);
+            }
+        }
+        verdicts.push((p, verdict));
     }
     let mut verdict = sum_verdicts(&verdicts, layout.polygon_rings.len() > 1);
     if let Some(&k) = joining.first() {
@@ -211,9 +221,54 @@ fn check_each_polygon(
     verdict
 }
 
+/// `detail`, about one polygon judged on its own, with its numbers made the file's: a
+/// triangle's (`triangle K`) by `triangles` (RESULT's number of each of the polygon's
+/// triangles), a vertex's (in `(a, b, c)`, `u→v`, `u–v`, `vertex V`) plus `vertex0`, a
+/// ring's (`ring R`) plus `ring0`.
+fn file_numbers(detail: &str, triangles: &[usize], vertex0: usize, ring0: usize) -> String {
+    let mut out = String::with_capacity(detail.len());
+    let mut rest = detail;
+    // what the next number is: a triangle, a ring, or (in a triple or edge) a vertex
+    let mut kind = ' ';
+    while let Some(start) = rest.find(|c: char| c.is_ascii_digit()) {
+        let (before, from) = rest.split_at(start);
+        let end = from
+            .find(|c: char| !c.is_ascii_digit())
+            .unwrap_or(from.len());
+        let (digits, after) = from.split_at(end);
+        out.push_str(before);
+        let word = before.trim_end().rsplit(' ').next().unwrap_or("");
+        kind = match word {
+            "triangle" => 't',
+            "ring" => 'r',
+            "vertex" => 'v',
+            _ if before.ends_with('(') || before.ends_with("→") || before.ends_with("–") => 'v',
+            _ if before == ", " && kind == 'v' => 'v',
+            _ if before.ends_with(' ') && word.ends_with(['→', '–']) => 'v',
+            "edge" | "edges" => 'v',
+            _ => ' ',
+        };
+        let n: usize = digits.parse().unwrap_or(0);
+        let mapped = match kind {
+            't' => triangles.get(n).copied(),
+            'v' => Some(n + vertex0),
+            'r' => Some(n + ring0),
+            _ => None,
+        };
+        match mapped {
+            // (a number too long to parse is left as it is)
+            Some(m) if digits.len() < 19 => out.push_str(&m.to_string()),
+            _ => out.push_str(digits),
+        }
+        rest = after;
+    }
+    out.push_str(rest);
+    out
+}
+
 /// One verdict for several polygons': every check passes where it passes for all (a
-/// failure's detail names its polygon when there are several, its numbers counted within
-/// that polygon), counts and spade's CDT add up, the deviation and worst aspect are the
+/// failure's detail names its polygon when there are several), counts and spade's CDT
+/// add up, the deviation and worst aspect are the
 /// largest, the smallest angles the smallest.
 fn sum_verdicts(verdicts: &[(usize, Verdict)], several: bool) -> Verdict {
     let Some((_, first)) = verdicts.first() else {
@@ -313,5 +368,31 @@ mod tests {
             Nesting::Roles(vec![Role::Outer, Role::Hole, Role::Outer])
         );
         assert_eq!(oracle.ring_starts, vec![0, 4, 7]);
+    }
+
+    #[test]
+    fn details_get_the_files_numbers() {
+        let numbers = [10, 11, 12];
+        let f = |d: &str| file_numbers(d, &numbers, 100, 7);
+        assert_eq!(
+            f("triangle 0 (3, 6, 0) is clockwise"),
+            "triangle 10 (103, 106, 100) is clockwise"
+        );
+        assert_eq!(
+            f("edge 3→6 is used by 2 triangles in the same direction (first: triangle 1) (and 3 more)"),
+            "edge 103→106 is used by 2 triangles in the same direction (first: triangle 11) (and 3 more)"
+        );
+        assert_eq!(
+            f("edge 1–2 of triangle 2 crosses ring 1 edge 4→5"),
+            "edge 101–102 of triangle 12 crosses ring 8 edge 104→105"
+        );
+        assert_eq!(
+            f("the triangles cover an area of 7.35e1, the polygon has 9.35e1 (difference -2e1)"),
+            "the triangles cover an area of 7.35e1, the polygon has 9.35e1 (difference -2e1)"
+        );
+        assert_eq!(
+            f("the centroid of triangle 2 (1, 2, 3) has winding number 2, not 1"),
+            "the centroid of triangle 12 (101, 102, 103) has winding number 2, not 1"
+        );
     }
 }

@@ -152,9 +152,31 @@ fn each_polygon_is_judged_on_its_own() {
         path("--fast"),
     ]);
     assert_eq!(merged.status.code(), Some(1));
-    // a triangle joining the two polygons' vertices is no triangle of either
+    // a failure in the second polygon names its triangle and vertices as RESULT numbers them
     let mut json: Value =
         serde_json::from_str(&fs::read_to_string(&result).expect("read")).expect("JSON");
+    let last = json["triangles"].as_array().expect("triangles").len() - 1;
+    json["triangles"][last]
+        .as_array_mut()
+        .expect("triangle")
+        .swap(1, 2);
+    let flipped = write(&dir, "flipped.json", &json.to_string());
+    let out = polytri(&[path("check"), &input, &flipped, path("--fast")]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains(&format!("orientation: polygon 1: triangle {last} (")),
+        "{stderr}"
+    );
+    let corner = |v: &Value| v.as_u64().expect("index");
+    let t = &json["triangles"][last];
+    let named = format!("({}, {}, {})", corner(&t[0]), corner(&t[1]), corner(&t[2]));
+    assert!(stderr.contains(&named), "{named} in {stderr}");
+    json["triangles"][last]
+        .as_array_mut()
+        .expect("triangle")
+        .swap(1, 2);
+    // a triangle joining the two polygons' vertices is no triangle of either
     json["triangles"][0] = serde_json::json!([0, 1, 4]);
     let joined = write(&dir, "joined.json", &json.to_string());
     let out = polytri(&[path("check"), &input, &joined, path("--fast")]);

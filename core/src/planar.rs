@@ -278,7 +278,18 @@ mod garbage {
     #[test]
     fn never_panics() {
         let mut next = random(0x3d_3d_3d);
-        let values = [0.0, 1.0, -1.0, 0.5, 1e300, -1e-300, f64::NAN, f64::INFINITY, 3.0, 7.0];
+        let values = [
+            0.0,
+            1.0,
+            -1.0,
+            0.5,
+            1e300,
+            -1e-300,
+            f64::NAN,
+            f64::INFINITY,
+            3.0,
+            7.0,
+        ];
         let mut tri = Triangulator::<f64>::new();
         let mut out = Vec::new();
         for case in 0..3000 {
@@ -288,7 +299,9 @@ mod garbage {
                 .collect();
             let starts: Vec<usize> = (0..next(4)).map(|_| next(14) as usize).collect();
             let options = Options::default().with_lenient(case % 2 == 1);
-            if let Ok((report, projection)) = tri.triangulate_3d(&vertices, &starts, &options, &mut out) {
+            if let Ok((report, projection)) =
+                tri.triangulate_3d(&vertices, &starts, &options, &mut out)
+            {
                 assert_eq!(report.triangles, out.len());
                 assert!(out.iter().flatten().all(|&i| (i as usize) < n));
                 assert!(projection.dropped < 3);

@@ -198,17 +198,10 @@ fn json_kind(value: &Value) -> &'static str {
     }
 }
 
-/// Drops a repeated closing point: the result JSON's vertices are the file's points with
-/// that one removed, and a ring of one point stays as it is.
-fn push_ring(polygon: &mut Polygon, mut ring: Ring) {
-    if ring.len() > 1 && ring.first() == ring.last() {
-        ring.pop();
-    }
-    polygon.push(ring);
-}
-
-/// [`push_ring`] for a ring whose points may have z (`z[i]` for point `i`): the closing
-/// point is dropped only where z repeats too (a vertical wall's points repeat in x and y).
+/// Adds a ring whose points may have z (`z[i]` for point `i`), dropping a repeated
+/// closing point: the result JSON's vertices are the file's points with that one removed
+/// (a ring of one point stays as it is). The closing point is one only where z repeats
+/// too: a vertical wall's points repeat in x and y.
 fn push_ring_z(
     polygon: &mut Polygon,
     zs: &mut Vec<Vec<Option<f64>>>,
@@ -618,12 +611,13 @@ fn wkt_geometry(input: &mut Input, geometry: &wkt::Wkt<f64>) {
 
 fn wkt_polygon(input: &mut Input, polygon: &wkt::types::Polygon<f64>) {
     let mut rings = Polygon::with_capacity(polygon.rings().len());
+    let mut z = Vec::with_capacity(polygon.rings().len());
     for ring in polygon.rings() {
-        push_ring(
-            &mut rings,
-            ring.coords().iter().map(|c| [c.x, c.y]).collect(),
-        );
+        let points = ring.coords().iter().map(|c| [c.x, c.y]).collect();
+        let ring_z = ring.coords().iter().map(|c| c.z).collect();
+        push_ring_z(&mut rings, &mut z, points, ring_z);
     }
+    input.z.push(polygon_z(z));
     input.polygons.push(rings);
 }
 

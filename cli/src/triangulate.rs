@@ -19,7 +19,7 @@ Input formats, recognised from the file: rings JSON [[[x, y], …], …] (first 
 the rest holes), shapes JSON (a list of such polygons), GeoJSON (Polygon, MultiPolygon, \
 Feature, FeatureCollection, GeometryCollection) and WKT (POLYGON, MULTIPOLYGON, \
 GEOMETRYCOLLECTION; by content or a .wkt name). A polygon whose every point has a third \
-coordinate (rings JSON, GeoJSON) is a planar polygon in 3D: triangulated in its own plane, \
+coordinate (rings JSON, GeoJSON, WKT Z) is a planar polygon in 3D: triangulated in its own plane, \
 z kept in the output (JSON, OBJ, GeoJSON); further coordinates are ignored. A \
 repeated closing point is dropped, and other geometry types are skipped with a warning.
 

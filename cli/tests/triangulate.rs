@@ -666,6 +666,13 @@ fn a_wall_in_3d_keeps_its_z_in_json_obj_and_geojson() {
     assert!(refused(&file, &[]).contains("not planar"));
     let (json, _) = triangulate(&file, &["--lenient"]);
     assert_eq!(triangles(&json).len(), 2);
+    // WKT with Z
+    let wkt =
+        "POLYGON Z ((2 0 0, 2 6 0, 2 6 3, 2 0 3, 2 0 0), (2 2 1, 2 2 2, 2 4 2, 2 4 1, 2 2 1))";
+    let file = write(&dir, "wall.wkt", wkt);
+    let (json, _) = triangulate(&file, &[]);
+    assert_eq!(triangles(&json).len(), 8);
+    assert_eq!(json["vertices"][2], serde_json::json!([2.0, 6.0, 3.0]));
     // GeoJSON positions of three numbers
     let text = collection(&[("w", "Wall", "[[[2,0,0],[2,6,0],[2,6,3],[2,0,3],[2,0,0]]]")]);
     let file = write(&dir, "wall.geojson", &text);

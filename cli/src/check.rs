@@ -161,10 +161,8 @@ fn check_each_polygon(
 ) -> Verdict {
     let mut verdicts = Vec::new();
     let mut joining = Vec::new();
-    let polygon_of = |v: u32| {
-        (0..layout.polygon_rings.len())
-            .find(|&p| layout.polygon_vertices(p).contains(&(v as usize)))
-    };
+    // (a binary search over the ring starts)
+    let polygon_of = |v: u32| layout.locate(v as usize).map(|at| at.polygon);
     let mut by_polygon: Vec<Vec<[u32; 3]>> = vec![Vec::new(); layout.polygon_rings.len()];
     // each polygon's triangles' numbers in RESULT
     let mut numbers: Vec<Vec<usize>> = vec![Vec::new(); layout.polygon_rings.len()];
@@ -184,9 +182,7 @@ fn check_each_polygon(
         if rings.is_empty() {
             continue;
         }
-        let starts = (layout.ring_starts[rings.clone()].iter())
-            .map(|s| s - span.start)
-            .collect();
+        let starts = layout.ring_starts_from(rings.clone(), span.start);
         let nesting = match nesting {
             NestingArg::Auto => Nesting::Auto,
             NestingArg::FirstOuter => Nesting::FirstIsOuter,
@@ -237,15 +233,16 @@ fn file_numbers(detail: &str, triangles: &[usize], vertex0: usize, ring0: usize)
             .unwrap_or(from.len());
         let (digits, after) = from.split_at(end);
         out.push_str(before);
-        let word = before.trim_end().rsplit(' ').next().unwrap_or("");
+        // the word before the number, without an opening bracket ("(ring 0)")
+        let word = (before.trim_end().rsplit(' ').next().unwrap_or("")).trim_start_matches('(');
+        // an end of an edge u→v or u–v, a corner of a triple (a, b, c), or named
+        let in_edge = after.starts_with(['→', '–']) || before.ends_with(['→', '–']);
+        let in_triple = before.ends_with('(') || (before == ", " && kind == 'v');
         kind = match word {
             "triangle" => 't',
             "ring" => 'r',
-            "vertex" => 'v',
-            _ if before.ends_with('(') || before.ends_with("→") || before.ends_with("–") => 'v',
-            _ if before == ", " && kind == 'v' => 'v',
-            _ if before.ends_with(' ') && word.ends_with(['→', '–']) => 'v',
-            "edge" | "edges" => 'v',
+            _ if in_edge || in_triple => 'v',
+            "vertex" | "edge" | "edges" => 'v',
             _ => ' ',
         };
         let n: usize = digits.parse().unwrap_or(0);
@@ -268,8 +265,8 @@ fn file_numbers(detail: &str, triangles: &[usize], vertex0: usize, ring0: usize)
 
 /// One verdict for several polygons': every check passes where it passes for all (a
 /// failure's detail names its polygon when there are several), counts and spade's CDT
-/// add up, the deviation and worst aspect are the
-/// largest, the smallest angles the smallest.
+/// add up, the deviation and worst aspect are the largest, the smallest angles the
+/// smallest.
 fn sum_verdicts(verdicts: &[(usize, Verdict)], several: bool) -> Verdict {
     let Some((_, first)) = verdicts.first() else {
         return check_with(
@@ -279,7 +276,18 @@ fn sum_verdicts(verdicts: &[(usize, Verdict)], several: bool) -> Verdict {
         );
     };
     let mut sum = first.clone();
-    sum.cdt = None;
+    // spade's CDTs add up when every polygon has one
+    sum.cdt = (verdicts.iter())
+        .map(|(_, v)| v.cdt.clone())
+        .reduce(|a, b| {
+            let (a, b) = (a?, b?);
+            Some(polytri_oracle::CdtComparison {
+                triangles: a.triangles + b.triangles,
+                area: a.area + b.area,
+                min_angle_deg: a.min_angle_deg.min(b.min_angle_deg),
+            })
+        })
+        .flatten();
     for check in &mut sum.checks {
         check.passed = true;
         check.detail = None;
@@ -299,15 +307,6 @@ fn sum_verdicts(verdicts: &[(usize, Verdict)], several: bool) -> Verdict {
         sum.min_angle_deg = sum.min_angle_deg.min(v.min_angle_deg);
         sum.worst_aspect = sum.worst_aspect.max(v.worst_aspect);
         sum.total_edge_length += v.total_edge_length;
-        sum.cdt = match (sum.cdt.take(), &v.cdt) {
-            (None, Some(c)) if *p == verdicts[0].0 => Some(c.clone()),
-            (Some(s), Some(c)) => Some(polytri_oracle::CdtComparison {
-                triangles: s.triangles + c.triangles,
-                area: s.area + c.area,
-                min_angle_deg: s.min_angle_deg.min(c.min_angle_deg),
-            }),
-            _ => None,
-        };
         for check in &v.checks {
             match sum.checks.iter_mut().find(|c| c.name == check.name) {
                 Some(c) if c.passed && !check.passed => {
@@ -393,6 +392,14 @@ mod tests {
         assert_eq!(
             f("the centroid of triangle 2 (1, 2, 3) has winding number 2, not 1"),
             "the centroid of triangle 12 (101, 102, 103) has winding number 2, not 1"
+        );
+        assert_eq!(
+            f("edges 4→5 (ring 0) and 20→9 (ring 1) cross"),
+            "edges 104→105 (ring 7) and 120→109 (ring 8) cross"
+        );
+        assert_eq!(
+            f("edge 9→5 of triangle 0 has no twin 5→9 and is not a boundary edge"),
+            "edge 109→105 of triangle 10 has no twin 105→109 and is not a boundary edge"
         );
     }
 }

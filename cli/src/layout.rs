@@ -79,6 +79,14 @@ impl Layout {
         layout
     }
 
+    /// The starts of flat rings `rings`, counted from vertex `first`: the ring starts of a
+    /// piece triangulated on its own.
+    pub fn ring_starts_from(&self, rings: Range<usize>, first: usize) -> Vec<usize> {
+        (self.ring_starts[rings].iter())
+            .map(|s| s - first)
+            .collect()
+    }
+
     /// The flat vertex range of flat ring `ring`.
     pub fn ring_vertices(&self, ring: usize) -> Range<usize> {
         let start = self

@@ -327,6 +327,24 @@ impl Outcome {
     }
 }
 
+impl Piece {
+    /// What the triangulator made of the piece of vertices `span`: its `triangles` and
+    /// `report`, indices made flat.
+    fn of(report: &polytri::Report<'_>, triangles: &[[u32; 3]], span: &Range<usize>) -> Self {
+        // Fits: the caller checked that all vertices are addressable by u32.
+        let offset = span.start as u32;
+        Piece {
+            triangles: triangles.iter().map(|t| t.map(|i| i + offset)).collect(),
+            polygons: report.polygons,
+            holes: report.holes,
+            dropped: (report.dropped.iter())
+                .map(|d| d.vertex as usize + span.start)
+                .collect(),
+            repairs: report.repairs.len(),
+        }
+    }
+}
+
 /// An error of the triangulator with what to add to its indices to make them flat: each
 /// piece is triangulated on its own, and numbered from 0.
 #[derive(Debug)]
@@ -334,6 +352,17 @@ struct Refusal {
     error: Error,
     vertex_offset: usize,
     ring_offset: usize,
+}
+
+impl Refusal {
+    /// `error` of the piece of rings `rings` and vertices `span`.
+    fn at(error: Error, rings: &Range<usize>, span: &Range<usize>) -> Self {
+        Refusal {
+            error,
+            vertex_offset: span.start,
+            ring_offset: rings.start,
+        }
+    }
 }
 
 /// The pieces triangulated on their own, as (rings, vertices) ranges of `layout`: each
@@ -356,15 +385,8 @@ fn triangulate_pieces<T: Coord>(
     pieces: &[(Range<usize>, Range<usize>)],
     options: &Options,
 ) -> Vec<Result<Piece, Refusal>> {
-    // each piece's ring starts, counted from its first vertex
-    let starts: Vec<Vec<usize>> = pieces
-        .iter()
-        .map(|(rings, span)| {
-            layout.ring_starts[rings.clone()]
-                .iter()
-                .map(|s| s - span.start)
-                .collect()
-        })
+    let starts: Vec<Vec<usize>> = (pieces.iter())
+        .map(|(rings, span)| layout.ring_starts_from(rings.clone(), span.start))
         .collect();
     let inputs: Vec<(&[[T; 2]], &[usize])> = pieces
         .iter()
@@ -377,22 +399,8 @@ fn triangulate_pieces<T: Coord>(
     let pieces = pieces.iter().zip(results).zip(&out);
     pieces
         .map(|(((rings, span), result), triangles)| {
-            let report = result.map_err(|error| Refusal {
-                error,
-                vertex_offset: span.start,
-                ring_offset: rings.start,
-            })?;
-            // Fits: the caller checked that all vertices are addressable by u32.
-            let offset = span.start as u32;
-            Ok(Piece {
-                triangles: triangles.iter().map(|t| t.map(|i| i + offset)).collect(),
-                polygons: report.polygons,
-                holes: report.holes,
-                dropped: (report.dropped.iter())
-                    .map(|d| d.vertex as usize + span.start)
-                    .collect(),
-                repairs: report.repairs.len(),
-            })
+            let report = result.map_err(|error| Refusal::at(error, rings, span))?;
+            Ok(Piece::of(&report, triangles, span))
         })
         .collect()
 }
@@ -428,30 +436,13 @@ fn triangulate_pieces_3d<T: Coord>(
     pieces
         .iter()
         .map(|(rings, span)| {
-            let refusal = |error| Refusal {
-                error,
-                vertex_offset: span.start,
-                ring_offset: rings.start,
-            };
             xyz.clear();
             xyz.extend(span.clone().map(|i| [vertices[i][0], vertices[i][1], z[i]]));
-            let starts: Vec<usize> = (layout.ring_starts[rings.clone()].iter())
-                .map(|s| s - span.start)
-                .collect();
+            let starts = layout.ring_starts_from(rings.clone(), span.start);
             let (report, _) = tri
                 .triangulate_3d(&xyz, &starts, options, &mut out)
-                .map_err(refusal)?;
-            // Fits: the caller checked that all vertices are addressable by u32.
-            let offset = span.start as u32;
-            Ok(Piece {
-                triangles: out.iter().map(|t| t.map(|i| i + offset)).collect(),
-                polygons: report.polygons,
-                holes: report.holes,
-                dropped: (report.dropped.iter())
-                    .map(|d| d.vertex as usize + span.start)
-                    .collect(),
-                repairs: report.repairs.len(),
-            })
+                .map_err(|error| Refusal::at(error, rings, span))?;
+            Ok(Piece::of(&report, &out, span))
         })
         .collect()
 }

@@ -40,7 +40,13 @@ const SHAPES: &str = "[
 
 /// Triangulates `SHAPES` into `dir/result.json` and returns the input and result paths.
 fn triangulated(dir: &Path) -> (PathBuf, PathBuf) {
-    let input = write(dir, "shapes.json", SHAPES);
+    triangulated_text(dir, SHAPES)
+}
+
+/// Writes `text` as `dir/shapes.json`, triangulates it into `dir/result.json` and returns
+/// the input and result paths.
+fn triangulated_text(dir: &Path, text: &str) -> (PathBuf, PathBuf) {
+    let input = write(dir, "shapes.json", text);
     let result = dir.join("result.json");
     let out = polytri(&[
         path("triangulate"),
@@ -124,23 +130,9 @@ fn says_when_the_result_is_of_another_input() {
 fn each_polygon_is_judged_on_its_own() {
     let dir = scratch("per_polygon");
     // two overlapping squares, as neighbouring features of a layer often are
-    let input = write(
+    let (input, result) = triangulated_text(
         &dir,
-        "layer.json",
         "[[[[0,0],[10,0],[10,10],[0,10]]], [[[9,-1],[20,-1],[20,11],[9,11]]]]",
-    );
-    let result = dir.join("result.json");
-    let out = polytri(&[
-        path("triangulate"),
-        &input,
-        path("-o"),
-        &result,
-        path("--quiet"),
-    ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
     );
     assert!(polytri(&[path("check"), &input, &result]).status.success());
     // judged together, the overlap is an error

@@ -18,13 +18,12 @@ pub(crate) struct EdgeIndex {
 }
 
 impl EdgeIndex {
-    /// The index, rebuilt first unless it lists the rings as they are linked now.
-    pub fn ensure(&mut self, pool: &Pool, rings: &[Ring]) -> &mut EdgeGrid {
+    /// Rebuilds the index unless it lists the rings as they are linked now.
+    pub fn ensure(&mut self, pool: &Pool, rings: &[Ring]) {
         if !self.current {
             self.rebuild(pool, rings);
         }
         debug_assert!(self.lists_every_edge(pool, rings));
-        &mut self.grid
     }
 
     /// Lists every live edge of the live rings again.

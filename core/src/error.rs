@@ -111,6 +111,12 @@ pub enum Error {
         /// The vertex furthest from the plane.
         vertex: usize,
     },
+    /// With a fill rule, a coordinate is too large (magnitude above 2¹⁰⁰) or too small
+    /// (nonzero, below 2⁻²⁴⁸) for crossing points to be computed exactly.
+    CoordinateRange {
+        /// The offending vertex.
+        vertex: usize,
+    },
     /// polytri failed where it should not have: **this is a bug, please report it** with the
     /// input at <https://github.com/polytri/polytri/issues>.
     Internal {
@@ -181,6 +187,10 @@ impl fmt::Display for Error {
             Error::NotPlanar { vertex } => write!(
                 f,
                 "the polygon is not planar: vertex {vertex} lies off its plane by more than the tolerance"
+            ),
+            Error::CoordinateRange { vertex } => write!(
+                f,
+                "vertex {vertex} has a coordinate outside what fill rules compute exactly (0, or a magnitude from 2^-248 to 2^100)"
             ),
             Error::Internal { stage } => write!(
                 f,

@@ -47,7 +47,7 @@ mod triangulator;
 
 pub use error::Error;
 pub use geom::Coord;
-pub use options::{Nesting, Options, Strategy};
+pub use options::{FillRule, Nesting, Options, Strategy};
 pub use planar::{Projection, PLANAR_TOLERANCE};
-pub use report::{deviation, DropReason, Dropped, Repair, RepairKind, Report};
+pub use report::{deviation, Added, DropReason, Dropped, Repair, RepairKind, Report};
 pub use triangulator::Triangulator;

@@ -62,6 +62,20 @@ pub struct Repair {
     pub vertex: u32,
 }
 
+/// A vertex added where input edges cross (with a fill rule only): the crossing point,
+/// rounded to the coordinate type.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Added {
+    /// Its index in the triangles: the number of input vertices plus its position in
+    /// [`Report::added`].
+    pub vertex: u32,
+    /// Its coordinates (exactly the coordinate type's value, widened to `f64`).
+    pub position: [f64; 2],
+    /// Two input edges crossing there, each named by the input vertex it starts at (more
+    /// may pass through the same point).
+    pub edges: [u32; 2],
+}
+
 /// The outcome of a successful triangulation, borrowed from the
 /// [`Triangulator`](crate::Triangulator) that made it.
 #[derive(Clone, Copy, Debug)]
@@ -81,6 +95,10 @@ pub struct Report<'a> {
     pub dropped: &'a [Dropped],
     /// What lenient mode repaired or skipped; always empty in strict mode.
     pub repairs: &'a [Repair],
+    /// Vertices added where edges cross, with a fill rule
+    /// ([`Options::with_fill_rule`](crate::Options::with_fill_rule)); always empty
+    /// without one. The triangles index the input's vertices, then these.
+    pub added: &'a [Added],
 }
 
 impl Report<'_> {

@@ -10,7 +10,7 @@ pub(crate) use edge_index::EdgeIndex;
 pub(crate) use winding::{lowest_net_arrives, net_boundary_counter_clockwise, NetEdge};
 
 use crate::crossings::sweep::Crossing;
-use crate::report::{DropReason, Dropped, Repair, RepairKind};
+use crate::report::{Added, DropReason, Dropped, Repair, RepairKind};
 use crate::structures::{NodeId, Pool};
 
 /// One ring after loading. Rings are indexed in load order, which is input order.
@@ -74,6 +74,8 @@ pub(crate) struct Context {
     pub lobe_rings: Vec<u32>,
     /// The live edges in a grid, built by `nest` and reused by `bridge`.
     pub edge_index: EdgeIndex,
+    /// With a fill rule: the vertices added where edges cross (for the `Report`).
+    pub added: Vec<Added>,
 }
 
 impl Context {

@@ -7,6 +7,11 @@
 pub trait Coord: Copy + Send + Sync + sealed::Sealed {
     /// The value as `f64` (exact for both implementations).
     fn to_f64(self) -> f64;
+    /// The value of an `f64` that is one of this type's values (exact then; otherwise
+    /// rounded).
+    fn from_f64(x: f64) -> Self;
+    /// Whether this is `f32` (its grid of values is then `f32`'s).
+    const IS_F32: bool;
 }
 
 impl Coord for f64 {
@@ -14,6 +19,11 @@ impl Coord for f64 {
     fn to_f64(self) -> f64 {
         self
     }
+    #[inline]
+    fn from_f64(x: f64) -> Self {
+        x
+    }
+    const IS_F32: bool = false;
 }
 
 impl Coord for f32 {
@@ -21,6 +31,11 @@ impl Coord for f32 {
     fn to_f64(self) -> f64 {
         f64::from(self)
     }
+    #[inline]
+    fn from_f64(x: f64) -> Self {
+        x as f32
+    }
+    const IS_F32: bool = true;
 }
 
 mod sealed {

@@ -10,4 +10,5 @@ pub(crate) mod clip;
 pub(crate) mod load;
 pub(crate) mod lobes;
 pub(crate) mod nest;
+pub(crate) mod resolve;
 pub(crate) mod touch;

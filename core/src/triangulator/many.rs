@@ -11,7 +11,7 @@
 use super::lenient::Outcome;
 use super::{Triangulator, Worker};
 use crate::geom::Coord;
-use crate::report::{Dropped, Repair, Report};
+use crate::report::{Added, Dropped, Repair, Report};
 use crate::{Error, Options};
 
 /// Below this many vertices in all, the inputs run on the caller's thread: waking the
@@ -31,6 +31,7 @@ struct Kept {
     triangles: usize,
     dropped: Vec<Dropped>,
     repairs: Vec<Repair>,
+    added: Vec<Added>,
 }
 
 impl Kept {
@@ -44,6 +45,8 @@ impl Kept {
         self.dropped.extend_from_slice(&worker.cx.dropped);
         self.repairs.clear();
         self.repairs.extend_from_slice(&worker.cx.repairs);
+        self.added.clear();
+        self.added.extend_from_slice(&worker.cx.added);
     }
 
     fn report(&self) -> Result<Report<'_>, Error> {
@@ -56,6 +59,7 @@ impl Kept {
                 deviation: self.deviation,
                 dropped: &self.dropped,
                 repairs: &self.repairs,
+                added: &self.added,
             }),
         }
     }

@@ -2,6 +2,7 @@
 //! every stage's scratch, and is the only code that runs the stages
 //! ([`pipeline`] in order, [`lenient`] for the policy of reruns on crossing input).
 
+mod fill;
 mod lenient;
 mod many;
 pub(crate) mod pipeline;
@@ -21,6 +22,7 @@ struct Worker {
     cx: Context,
     stages: pipeline::Stages,
     reruns: lenient::Reruns,
+    fill: fill::Scratch,
 }
 
 impl Worker {
@@ -33,7 +35,21 @@ impl Worker {
         out: &mut Vec<[u32; 3]>,
     ) -> Result<lenient::Outcome, Error> {
         let (cx, stages, reruns) = (&mut self.cx, &mut self.stages, &mut self.reruns);
-        lenient::triangulate(cx, stages, reruns, vertices, ring_starts, options, out)
+        cx.added.clear();
+        match options.fill_rule {
+            Some(rule) => fill::triangulate(
+                cx,
+                stages,
+                reruns,
+                &mut self.fill,
+                vertices,
+                ring_starts,
+                rule,
+                options,
+                out,
+            ),
+            None => lenient::triangulate(cx, stages, reruns, vertices, ring_starts, options, out),
+        }
     }
 }
 
@@ -62,6 +78,8 @@ pub struct Triangulator<T: Coord> {
     many: many::Many,
     /// `triangulate_3d`'s projection of the vertices, kept between calls.
     projected: Vec<[T; 2]>,
+    /// The last call's added vertices in the coordinate type.
+    added: Vec<[T; 2]>,
     _coord: PhantomData<fn(T)>,
 }
 
@@ -78,6 +96,7 @@ impl<T: Coord> Triangulator<T> {
             worker: Worker::default(),
             many: many::Many::default(),
             projected: Vec::new(),
+            added: Vec::new(),
             _coord: PhantomData,
         }
     }
@@ -136,6 +155,14 @@ impl<T: Coord> Triangulator<T> {
         self.projected.clear();
         fill(&mut self.projected);
         let made = (self.worker).run(&self.projected, ring_starts, options, out)?;
+        self.added.clear();
+        (self.added).extend(
+            self.worker
+                .cx
+                .added
+                .iter()
+                .map(|a| a.position.map(T::from_f64)),
+        );
         Ok(Report {
             triangles: out.len(),
             polygons: made.polygons,
@@ -143,7 +170,29 @@ impl<T: Coord> Triangulator<T> {
             deviation: made.deviation,
             dropped: &self.worker.cx.dropped,
             repairs: &self.worker.cx.repairs,
+            added: &self.worker.cx.added,
         })
+    }
+
+    /// The vertices the last [`Triangulator::triangulate`] call added where edges cross
+    /// (with a fill rule; else none), in the coordinate type: the triangles index the
+    /// input's vertices, then these. [`Report::added`] says which edges each splits.
+    ///
+    /// ```
+    /// # fn main() -> Result<(), polytri::Error> {
+    /// use polytri::{FillRule, Options, Triangulator};
+    /// let bow_tie = [[0.0f32, 0.0], [2.0, 2.0], [2.0, 0.0], [0.0, 2.0]];
+    /// let mut tri = Triangulator::new();
+    /// let mut out = Vec::new();
+    /// tri.triangulate(&bow_tie, &[0], &Options::new().with_fill_rule(FillRule::NonZero), &mut out)?;
+    /// assert_eq!(tri.added_vertices(), &[[1.0, 1.0]]);
+    /// assert_eq!(out.len(), 2); // one triangle per wing, both at vertex 4 = the crossing
+    /// assert!(out.iter().all(|t| t.contains(&4)));
+    /// # Ok(())
+    /// # }
+    /// ```
+    pub fn added_vertices(&self) -> &[[T; 2]] {
+        &self.added
     }
 
     /// Triangulates the rings given by `vertices` and `ring_starts`.
@@ -169,6 +218,14 @@ impl<T: Coord> Triangulator<T> {
         out: &mut Vec<[u32; 3]>,
     ) -> Result<Report<'_>, Error> {
         let made = self.worker.run(vertices, ring_starts, options, out)?;
+        self.added.clear();
+        (self.added).extend(
+            self.worker
+                .cx
+                .added
+                .iter()
+                .map(|a| a.position.map(T::from_f64)),
+        );
         Ok(Report {
             triangles: out.len(),
             polygons: made.polygons,
@@ -176,6 +233,7 @@ impl<T: Coord> Triangulator<T> {
             deviation: made.deviation,
             dropped: &self.worker.cx.dropped,
             repairs: &self.worker.cx.repairs,
+            added: &self.worker.cx.added,
         })
     }
 }

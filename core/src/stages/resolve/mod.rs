@@ -1,0 +1,517 @@
+//! Stage `resolve` (fill rules only): crossing and overlapping rings become valid rings
+//! bounding exactly the region a [`FillRule`] selects, for the usual pipeline to
+//! triangulate.
+//!
+//! 1. **Crossings.** Every pair of edges crossing at a point interior to both is found
+//!    (a bucket grid proposes pairs, [`crosses`] decides) and the crossing point is
+//!    rounded to the coordinate type's grid, exactly ([`SnapGrid::crossing`]).
+//! 2. **Snap rounding** (Hobby; Guibas and Marimont), only when some edges cross. The
+//!    *hot pixels* are the pixels (the points rounding to a grid point) of the input's
+//!    vertices and of the rounded crossings. Each edge becomes the polyline through the
+//!    centres of every hot pixel it meets ([`SnapGrid::meets_pixel`]), in order along the
+//!    edge. The rounded arrangement is topologically consistent with the exact one: it is
+//!    what collapsing every hot pixel to its centre does to the exact arrangement, a
+//!    continuous deformation in which no vertex passes through an edge, so no two rounded
+//!    fragments cross and every face keeps its winding number (the argument is Guibas
+//!    and Marimont's; it uses only that the pixels are disjoint axis-parallel boxes, each
+//!    containing its centre, of a grid of rows and columns — which the pixels of a
+//!    floating-point grid are, though their sizes vary). Each point moves by less than
+//!    its pixel's diagonal. Without crossings nothing is rounded and no vertex is added.
+//! 3. **Splitting** at vertices lying exactly on a fragment (a vertex on another ring's
+//!    edge, collinear overlaps, and the rare fragment that snap rounding drew across a
+//!    hot centre): pure subdivision, no point moves. Fragments between the same two
+//!    vertices are then merged, their directions summed into a *net count*; net zero
+//!    edges separate nothing and are dropped.
+//! 4. **Winding** ([`winding`]): a sweep over the now planar edges gives each edge the
+//!    winding numbers on its two sides; an edge is on the region's boundary when the
+//!    rule accepts one side and not the other, and is directed with the region on its
+//!    left.
+//! 5. **Rings** ([`trace`]): the boundary edges are linked at each vertex as the region's
+//!    face walk does (each arriving edge leaves by the next boundary edge clockwise) and
+//!    cut into simple rings where a walk revisits a vertex. Their even–odd region is the
+//!    rule's region; they touch only at vertices and never cross.
+//!
+//! The rings' vertices are the input's (the lowest index at each position) and the added
+//! crossings; `map` gives the output index of each.
+
+mod cells;
+mod trace;
+mod winding;
+
+use cells::Cells;
+
+use crate::geom::{crosses, in_range, orient2d, within_box, Orientation, Point, SnapGrid};
+use crate::report::Added;
+use crate::{Error, FillRule};
+
+/// An input edge: its start vertex (input index) and its ends as hot points.
+#[derive(Clone, Copy, Debug)]
+struct Edge {
+    from: u32,
+    a: u32,
+    b: u32,
+}
+
+/// The stage's buffers and its result.
+#[derive(Debug, Default)]
+pub(crate) struct Scratch {
+    /// Distinct positions: the input's (sorted), then the added crossings.
+    hot: Vec<[f64; 2]>,
+    /// The output vertex index of each hot point.
+    hot_out: Vec<u32>,
+    /// Each input vertex's hot point.
+    vertex_hot: Vec<u32>,
+    edges: Vec<Edge>,
+    order: Vec<u32>,
+    cells: Cells,
+    crossings: Vec<([f64; 2], u32, u32)>,
+    on_edge: Vec<u32>,
+    /// Fragments: hot points `(lo, hi)` and the net count from lo to hi.
+    fragments: Vec<(u32, u32, i32)>,
+    winding: winding::Scratch,
+    trace: trace::Scratch,
+    /// The result: rings of positions, their starts, and each position's output index.
+    pub rings: Vec<[f64; 2]>,
+    pub ring_starts: Vec<usize>,
+    pub map: Vec<u32>,
+}
+
+/// Resolves `vertices` (finite, widened to `f64`) and `ring_starts` (checked by `load`)
+/// into rings bounding `rule`'s region, rounding crossings to `grid`; the added vertices
+/// go to `added`.
+pub(crate) fn resolve(
+    s: &mut Scratch,
+    vertices: &[[f64; 2]],
+    ring_starts: &[usize],
+    rule: FillRule,
+    grid: SnapGrid,
+    added: &mut Vec<Added>,
+) -> Result<(), Error> {
+    s.rings.clear();
+    s.ring_starts.clear();
+    s.map.clear();
+    if let Some(v) = vertices
+        .iter()
+        .position(|p| !in_range(p[0]) || !in_range(p[1]))
+    {
+        return Err(Error::CoordinateRange { vertex: v });
+    }
+    distinct_positions(s, vertices);
+    collect_edges(s, vertices, ring_starts);
+    let (lo, hi) = bounds(&s.hot);
+    let reach = grid.half_width(
+        lo[0]
+            .abs()
+            .max(lo[1].abs())
+            .max(hi[0].abs())
+            .max(hi[1].abs()),
+    );
+    find_crossings(s, lo, hi, grid, reach);
+    add_crossings(s, vertices.len(), added)?;
+    if s.crossings.is_empty() {
+        s.fragments.clear();
+        for e in &s.edges {
+            s.fragments.push((e.a, e.b, 1));
+        }
+    } else {
+        snap(s, lo, hi, grid, reach);
+    }
+    split_at_vertices(s, lo, hi, reach);
+    merge_fragments(&mut s.fragments);
+    winding::boundary(&mut s.winding, &s.hot, &s.fragments, rule);
+    trace::rings(&mut s.trace, &s.hot, &s.winding.boundary)?;
+    for ring in s.trace.rings() {
+        s.ring_starts.push(s.rings.len());
+        for &h in ring {
+            s.rings.push(s.hot[h as usize]);
+            s.map.push(s.hot_out[h as usize]);
+        }
+    }
+    Ok(())
+}
+
+/// The input's distinct positions, sorted, each with the lowest input index there.
+fn distinct_positions(s: &mut Scratch, vertices: &[[f64; 2]]) {
+    s.order.clear();
+    s.order.extend(0..vertices.len() as u32);
+    let key = |i: &u32| {
+        let p = vertices[*i as usize];
+        (p[0], p[1], *i)
+    };
+    s.order.sort_unstable_by(|i, j| {
+        key(i)
+            .partial_cmp(&key(j))
+            .unwrap_or(core::cmp::Ordering::Equal)
+    });
+    s.hot.clear();
+    s.hot_out.clear();
+    s.vertex_hot.clear();
+    s.vertex_hot.resize(vertices.len(), 0);
+    for &i in &s.order {
+        let p = vertices[i as usize];
+        // -0.0 and 0.0 are one position
+        let p = [p[0] + 0.0, p[1] + 0.0];
+        if s.hot.last() != Some(&p) {
+            s.hot.push(p);
+            s.hot_out.push(i);
+        }
+        s.vertex_hot[i as usize] = (s.hot.len() - 1) as u32;
+    }
+}
+
+/// Every ring's edges between distinct positions.
+fn collect_edges(s: &mut Scratch, vertices: &[[f64; 2]], ring_starts: &[usize]) {
+    s.edges.clear();
+    for (r, &start) in ring_starts.iter().enumerate() {
+        let end = ring_starts.get(r + 1).copied().unwrap_or(vertices.len());
+        for i in start..end {
+            let j = if i + 1 < end { i + 1 } else { start };
+            let (a, b) = (s.vertex_hot[i], s.vertex_hot[j]);
+            if a != b {
+                s.edges.push(Edge {
+                    from: i as u32,
+                    a,
+                    b,
+                });
+            }
+        }
+    }
+}
+
+fn bounds(points: &[[f64; 2]]) -> ([f64; 2], [f64; 2]) {
+    let mut lo = [f64::INFINITY; 2];
+    let mut hi = [f64::NEG_INFINITY; 2];
+    for p in points {
+        for k in 0..2 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    if lo[0] > hi[0] {
+        return ([0.0; 2], [0.0; 2]);
+    }
+    (lo, hi)
+}
+
+fn point(p: [f64; 2]) -> Point {
+    Point::new(p[0], p[1])
+}
+
+/// Every pair of edges crossing inside both, with the crossing rounded to the grid.
+fn find_crossings(s: &mut Scratch, lo: [f64; 2], hi: [f64; 2], grid: SnapGrid, reach: f64) {
+    s.crossings.clear();
+    s.cells.reset(lo, hi, s.edges.len(), 8.0 * reach);
+    let frame = s.cells.frame;
+    let (edges, hot) = (&s.edges, &s.hot);
+    s.cells.fill(edges.len(), |i, push| {
+        let e = edges[i];
+        frame.along(hot[e.a as usize], hot[e.b as usize], &mut *push);
+    });
+    let mut pairs: Vec<(u32, u32)> = Vec::new();
+    for c in 0..s.cells.len() {
+        let list = s.cells.cell(c);
+        for (k, &i) in list.iter().enumerate() {
+            let e = edges[i as usize];
+            let (a, b) = (hot[e.a as usize], hot[e.b as usize]);
+            for &j in &list[k + 1..] {
+                let f = edges[j as usize];
+                let (c, d) = (hot[f.a as usize], hot[f.b as usize]);
+                if crosses(point(a), point(b), point(c), point(d)) {
+                    pairs.push((i.min(j), i.max(j)));
+                }
+            }
+        }
+    }
+    pairs.sort_unstable();
+    pairs.dedup();
+    for (i, j) in pairs {
+        let (e, f) = (edges[i as usize], edges[j as usize]);
+        let p = grid.crossing(
+            hot[e.a as usize],
+            hot[e.b as usize],
+            hot[f.a as usize],
+            hot[f.b as usize],
+        );
+        s.crossings.push((p, e.from, f.from));
+    }
+}
+
+/// Makes the rounded crossings hot points; those at new positions become added vertices.
+fn add_crossings(s: &mut Scratch, inputs: usize, added: &mut Vec<Added>) -> Result<(), Error> {
+    s.crossings
+        .sort_unstable_by(|x, y| x.partial_cmp(y).unwrap_or(core::cmp::Ordering::Equal));
+    let input_points = s.hot.len();
+    let mut last: Option<[f64; 2]> = None;
+    for &(p, e1, e2) in &s.crossings {
+        if last == Some(p) {
+            continue;
+        }
+        last = Some(p);
+        let known = s.hot[..input_points]
+            .binary_search_by(|q| q.partial_cmp(&p).unwrap_or(core::cmp::Ordering::Equal))
+            .is_ok();
+        if known {
+            continue;
+        }
+        let vertex = inputs + added.len();
+        let vertex = u32::try_from(vertex).map_err(|_| Error::TooManyVertices { count: vertex })?;
+        added.push(Added {
+            vertex,
+            position: p,
+            edges: [e1, e2],
+        });
+        s.hot.push(p);
+        s.hot_out.push(vertex);
+    }
+    Ok(())
+}
+
+/// Snap rounding: each edge through the centres of the hot pixels it meets.
+fn snap(s: &mut Scratch, lo: [f64; 2], hi: [f64; 2], grid: SnapGrid, reach: f64) {
+    s.cells.reset(lo, hi, s.hot.len(), 8.0 * reach);
+    s.cells.fill_points(&s.hot);
+    s.fragments.clear();
+    let frame = s.cells.frame;
+    for e in &s.edges {
+        let (a, b) = (s.hot[e.a as usize], s.hot[e.b as usize]);
+        s.on_edge.clear();
+        frame.along(a, b, |c| {
+            for &q in s.cells.cell(c) {
+                if q != e.a && q != e.b && near(a, b, s.hot[q as usize], grid) {
+                    let qp = s.hot[q as usize];
+                    if grid.meets_pixel(a, b, qp) {
+                        s.on_edge.push(q);
+                    }
+                }
+            }
+        });
+        push_path(&mut s.fragments, &mut s.on_edge, &s.hot, e.a, e.b);
+    }
+}
+
+/// Whether the pixel of grid point `q` may meet segment a–b (a float filter: `false`
+/// only when it certainly does not).
+fn near(a: [f64; 2], b: [f64; 2], q: [f64; 2], grid: SnapGrid) -> bool {
+    let w = grid.half_width(q[0]).max(grid.half_width(q[1]));
+    if q[0] + w < a[0].min(b[0])
+        || q[0] - w > a[0].max(b[0])
+        || q[1] + w < a[1].min(b[1])
+        || q[1] - w > a[1].max(b[1])
+    {
+        return false;
+    }
+    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+    let (qx, qy) = (q[0] - a[0], q[1] - a[1]);
+    let det = dx * qy - dy * qx;
+    let err = 8.0 * f64::EPSILON * ((dx * qy).abs() + (dy * qx).abs());
+    det.abs() <= (dx.abs() + dy.abs()) * w * 2.0 + err + w * f64::EPSILON
+}
+
+/// Adds the fragments of the path from hot point `a` through `mid` (in any order) to `b`,
+/// sorting `mid` along the direction a → b.
+fn push_path(
+    fragments: &mut Vec<(u32, u32, i32)>,
+    mid: &mut Vec<u32>,
+    hot: &[[f64; 2]],
+    a: u32,
+    b: u32,
+) {
+    let (pa, pb) = (hot[a as usize], hot[b as usize]);
+    let sx = if pb[0] >= pa[0] { 1.0 } else { -1.0 };
+    let sy = if pb[1] >= pa[1] { 1.0 } else { -1.0 };
+    // columns and rows of the pixels met are monotone along the segment: lexicographic
+    // order by (sx·x, sy·y) is the order along it
+    mid.sort_unstable_by(|&i, &j| {
+        let (p, q) = (hot[i as usize], hot[j as usize]);
+        (sx * p[0], sy * p[1])
+            .partial_cmp(&(sx * q[0], sy * q[1]))
+            .unwrap_or(core::cmp::Ordering::Equal)
+    });
+    mid.dedup();
+    let mut prev = a;
+    for &m in mid.iter().chain(core::iter::once(&b)) {
+        if m != prev {
+            fragments.push((prev, m, 1));
+            prev = m;
+        }
+    }
+}
+
+/// Splits every fragment at the hot points lying exactly inside it.
+fn split_at_vertices(s: &mut Scratch, lo: [f64; 2], hi: [f64; 2], reach: f64) {
+    if s.crossings.is_empty() {
+        // (else `snap` listed the hot points already)
+        s.cells.reset(lo, hi, s.hot.len(), 8.0 * reach);
+        s.cells.fill_points(&s.hot);
+    }
+    let frame = s.cells.frame;
+    let mut out = Vec::with_capacity(s.fragments.len());
+    for &(a, b, _) in &s.fragments {
+        let (pa, pb) = (s.hot[a as usize], s.hot[b as usize]);
+        s.on_edge.clear();
+        frame.along(pa, pb, |c| {
+            for &q in s.cells.cell(c) {
+                let pq = s.hot[q as usize];
+                if q != a
+                    && q != b
+                    && within_box(point(pa), point(pb), point(pq))
+                    && orient2d(point(pa), point(pb), point(pq)) == Orientation::Collinear
+                {
+                    s.on_edge.push(q);
+                }
+            }
+        });
+        push_path(&mut out, &mut s.on_edge, &s.hot, a, b);
+    }
+    s.fragments = out;
+}
+
+/// Merges fragments between the same two points, summing their directions (from the
+/// lower index to the higher); drops those that cancel.
+fn merge_fragments(fragments: &mut Vec<(u32, u32, i32)>) {
+    for f in fragments.iter_mut() {
+        if f.0 > f.1 {
+            *f = (f.1, f.0, -f.2);
+        }
+    }
+    fragments.sort_unstable_by_key(|f| (f.0, f.1));
+    let mut out = 0;
+    for i in 0..fragments.len() {
+        let f = fragments[i];
+        if out > 0 && (fragments[out - 1].0, fragments[out - 1].1) == (f.0, f.1) {
+            fragments[out - 1].2 += f.2;
+        } else {
+            fragments[out] = f;
+            out += 1;
+        }
+    }
+    fragments.truncate(out);
+    fragments.retain(|f| f.2 != 0);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The rules' regions' areas for `rings`, by the shoelace formula over the resolved
+    /// rings (directed with the region on their left, so their signed areas add up), and
+    /// the number of vertices added.
+    fn areas(rings: &[Vec<[f64; 2]>]) -> ([f64; 5], usize) {
+        let mut vertices = Vec::new();
+        let mut starts = Vec::new();
+        for r in rings {
+            starts.push(vertices.len());
+            vertices.extend_from_slice(r);
+        }
+        let mut out = [0.0; 5];
+        let mut extra = 0;
+        for (k, rule) in FillRule::ALL.into_iter().enumerate() {
+            let mut s = Scratch::default();
+            let mut added = Vec::new();
+            let grid = SnapGrid { f32: false };
+            resolve(&mut s, &vertices, &starts, rule, grid, &mut added).unwrap();
+            let mut twice = 0.0;
+            for (i, &start) in s.ring_starts.iter().enumerate() {
+                let end = s.ring_starts.get(i + 1).copied().unwrap_or(s.rings.len());
+                let ring = &s.rings[start..end];
+                assert!(
+                    ring.len() >= 3,
+                    "{rule:?}: a ring of {} vertices",
+                    ring.len()
+                );
+                for j in 0..ring.len() {
+                    let (a, b) = (ring[j], ring[(j + 1) % ring.len()]);
+                    twice += a[0] * b[1] - a[1] * b[0];
+                }
+            }
+            out[k] = twice / 2.0;
+            extra = added.len();
+        }
+        (out, extra)
+    }
+
+    fn square(x: f64, y: f64, side: f64) -> Vec<[f64; 2]> {
+        vec![[x, y], [x + side, y], [x + side, y + side], [x, y + side]]
+    }
+
+    fn reversed(mut r: Vec<[f64; 2]>) -> Vec<[f64; 2]> {
+        r.reverse();
+        r
+    }
+
+    // order of the areas: even-odd, nonzero, positive, negative, abs ≥ 2
+
+    #[test]
+    fn overlapping_squares_give_each_rule_its_region() {
+        let (a, added) = areas(&[square(0.0, 0.0, 2.0), square(1.0, 1.0, 2.0)]);
+        assert_eq!(a, [6.0, 7.0, 7.0, 0.0, 1.0]);
+        assert_eq!(added, 2);
+        let (a, _) = areas(&[square(0.0, 0.0, 2.0), reversed(square(1.0, 1.0, 2.0))]);
+        assert_eq!(a, [6.0, 6.0, 3.0, 3.0, 0.0]);
+    }
+
+    #[test]
+    fn a_ring_wound_twice_covers_its_inside_twice() {
+        let mut twice = square(0.0, 0.0, 1.0);
+        twice.extend(square(0.0, 0.0, 1.0));
+        let (a, added) = areas(&[twice]);
+        assert_eq!(a, [0.0, 1.0, 1.0, 0.0, 1.0]);
+        assert_eq!(added, 0);
+        // the same as two copies
+        let (b, _) = areas(&[square(0.0, 0.0, 1.0), square(0.0, 0.0, 1.0)]);
+        assert_eq!(a, b);
+    }
+
+    #[test]
+    fn shared_edges_and_vertices_on_edges_need_no_added_vertex() {
+        // side by side, one edge shared in part; a third square's corner on an edge
+        let (a, added) = areas(&[
+            square(0.0, 0.0, 2.0),
+            square(2.0, 1.0, 2.0),
+            reversed(square(0.0, 2.0, 1.0)),
+        ]);
+        assert_eq!(added, 0);
+        assert_eq!(a, [9.0, 9.0, 8.0, 1.0, 0.0]);
+    }
+
+    #[test]
+    fn a_pentagram_has_points_by_even_odd_and_a_centre_by_nonzero() {
+        let star: Vec<[f64; 2]> = (0..5)
+            .map(|k| {
+                let t = core::f64::consts::FRAC_PI_2 + 4.0 * core::f64::consts::PI * k as f64 / 5.0;
+                [100.0 * t.cos(), 100.0 * t.sin()]
+            })
+            .collect();
+        let (a, added) = areas(&[star]);
+        assert_eq!(added, 5);
+        // the pentagram's centre pentagon has winding 2: nonzero − even-odd = abs ≥ 2
+        assert!((a[1] - a[0] - a[4]).abs() < 1e-9 * a[1], "{a:?}");
+        assert!(a[4] > 0.0 && a[0] > a[4] && a[3] == 0.0 && a[2] == a[1]);
+    }
+
+    #[test]
+    fn out_of_range_coordinates_are_refused() {
+        let mut s = Scratch::default();
+        let grid = SnapGrid { f32: false };
+        let tiny = [[0.0, 0.0], [1.0, 0.0], [1e-80, 1.0]];
+        let err = resolve(
+            &mut s,
+            &tiny,
+            &[0],
+            FillRule::NonZero,
+            grid,
+            &mut Vec::new(),
+        );
+        assert_eq!(err, Err(Error::CoordinateRange { vertex: 2 }));
+        let huge = [[0.0, 0.0], [1e31, 0.0], [1.0, 1.0]];
+        let err = resolve(
+            &mut s,
+            &huge,
+            &[0],
+            FillRule::NonZero,
+            grid,
+            &mut Vec::new(),
+        );
+        assert_eq!(err, Err(Error::CoordinateRange { vertex: 1 }));
+    }
+}

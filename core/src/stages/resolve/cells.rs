@@ -103,23 +103,27 @@ impl Frame {
         clamp_slot((y - self.y0) * self.sy, self.rows)
     }
 
-    /// Calls `f` with every cell within one cell of segment a–b (a superset of the cells
-    /// it passes through).
-    pub fn along(self, a: [f64; 2], b: [f64; 2], mut f: impl FnMut(usize)) {
-        let (c0, c1) = order(self.column(a[0]), self.column(b[0]));
-        let (c0, c1) = (c0.saturating_sub(1), (c1 + 1).min(self.cols - 1));
+    /// Calls `f` with every cell that a point within `pad` of segment a–b lies in (and
+    /// maybe a few more). `pad` must exceed the rounding error of the coordinates' size.
+    pub fn along(self, a: [f64; 2], b: [f64; 2], pad: f64, mut f: impl FnMut(usize)) {
+        let (xmin, xmax) = (a[0].min(b[0]), a[0].max(b[0]));
+        let (ymin, ymax) = (a[1].min(b[1]), a[1].max(b[1]));
+        let (c0, c1) = (self.column(xmin - pad), self.column(xmax + pad));
         let dx = b[0] - a[0];
         for c in c0..=c1 {
-            let (r0, r1) = if dx == 0.0 || self.sx == 0.0 || c1 - c0 <= 2 {
-                order(self.row(a[1]), self.row(b[1]))
+            let (r0, r1) = if c1 - c0 <= 1 || self.sx == 0.0 {
+                (self.row(ymin - pad), self.row(ymax + pad))
             } else {
-                // the segment's y over this column's x-range (clamped to the segment)
-                let xl = (self.x0 + c as f64 / self.sx).clamp(a[0].min(b[0]), a[0].max(b[0]));
-                let xr = (self.x0 + (c + 1) as f64 / self.sx).clamp(a[0].min(b[0]), a[0].max(b[0]));
-                let y = |x: f64| a[1] + (b[1] - a[1]) * ((x - a[0]) / dx);
-                order(self.row(y(xl)), self.row(y(xr)))
+                // the segment's y over this column's x-range (clamped to the segment);
+                // an error δ in x moves y by slope·δ, which the pad then covers
+                let slope = (b[1] - a[1]) / dx;
+                let xl = (self.x0 + c as f64 / self.sx).clamp(xmin, xmax);
+                let xr = (self.x0 + (c + 1) as f64 / self.sx).clamp(xmin, xmax);
+                let y = |x: f64| a[1] + slope * (x - a[0]);
+                let (y0, y1) = (y(xl).min(y(xr)), y(xl).max(y(xr)));
+                let p = pad * (1.0 + slope.abs());
+                (self.row(y0.max(ymin) - p), self.row(y1.min(ymax) + p))
             };
-            let (r0, r1) = (r0.saturating_sub(1), (r1 + 1).min(self.rows - 1));
             for r in r0..=r1 {
                 f(r * self.cols + c);
             }

@@ -202,10 +202,11 @@ fn find_crossings(s: &mut Scratch, lo: [f64; 2], hi: [f64; 2], grid: SnapGrid, r
     s.crossings.clear();
     s.cells.reset(lo, hi, s.edges.len(), 8.0 * reach);
     let frame = s.cells.frame;
+    let pad = 8.0 * reach;
     let (edges, hot) = (&s.edges, &s.hot);
     s.cells.fill(edges.len(), |i, push| {
         let e = edges[i];
-        frame.along(hot[e.a as usize], hot[e.b as usize], &mut *push);
+        frame.along(hot[e.a as usize], hot[e.b as usize], pad, &mut *push);
     });
     let mut pairs: Vec<(u32, u32)> = Vec::new();
     for c in 0..s.cells.len() {
@@ -272,10 +273,11 @@ fn snap(s: &mut Scratch, lo: [f64; 2], hi: [f64; 2], grid: SnapGrid, reach: f64)
     s.cells.fill_points(&s.hot);
     s.fragments.clear();
     let frame = s.cells.frame;
+    let pad = 8.0 * reach;
     for e in &s.edges {
         let (a, b) = (s.hot[e.a as usize], s.hot[e.b as usize]);
         s.on_edge.clear();
-        frame.along(a, b, |c| {
+        frame.along(a, b, pad, |c| {
             for &q in s.cells.cell(c) {
                 if q != e.a && q != e.b && near(a, b, s.hot[q as usize], grid) {
                     let qp = s.hot[q as usize];
@@ -345,11 +347,12 @@ fn split_at_vertices(s: &mut Scratch, lo: [f64; 2], hi: [f64; 2], reach: f64) {
         s.cells.fill_points(&s.hot);
     }
     let frame = s.cells.frame;
+    let pad = 8.0 * reach;
     let mut out = Vec::with_capacity(s.fragments.len());
     for &(a, b, _) in &s.fragments {
         let (pa, pb) = (s.hot[a as usize], s.hot[b as usize]);
         s.on_edge.clear();
-        frame.along(pa, pb, |c| {
+        frame.along(pa, pb, pad, |c| {
             for &q in s.cells.cell(c) {
                 let pq = s.hot[q as usize];
                 if q != a

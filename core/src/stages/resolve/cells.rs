@@ -131,10 +131,6 @@ impl Frame {
     }
 }
 
-fn order(a: usize, b: usize) -> (usize, usize) {
-    (a.min(b), a.max(b))
-}
-
 fn per_unit(cells: usize, extent: f64) -> f64 {
     let s = cells as f64 / extent;
     if s.is_finite() && extent > 0.0 {

@@ -157,11 +157,11 @@ fn parse_polytri(s: &str) -> Result<Implementation, String> {
     } else {
         format!("polytri-{s}")
     };
-    Implementation::POLYTRI
+    Implementation::POLYTRI_ALL
         .into_iter()
         .find(|imp| imp.name().eq_ignore_ascii_case(&full))
         .ok_or_else(|| {
-            format!("unknown polytri configuration '{s}' (known: fast, lenient, quality, check, threads)")
+            format!("unknown polytri configuration '{s}' (known: fast, lenient, quality, check, threads, even-odd)")
         })
 }
 

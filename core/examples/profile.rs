@@ -1,5 +1,5 @@
 //! Runs polytri on one rings or shapes JSON file many times, for a profiler:
-//! `cargo run --release -p polytri --example profile -- FILE [RUNS] [fast|lenient|quality|check|threads:N] [first|auto]`
+//! `cargo run --release -p polytri --example profile -- FILE [RUNS] [fast|lenient|quality|check|even-odd|threads:N] [first|auto]`
 //! (`threads:N` needs `--features threads`).
 //! Shapes go one polygon at a time (first ring outer, unless `auto` asks for nesting by
 //! containment), as `polytri bench` gives them.
@@ -50,6 +50,7 @@ fn main() {
         _ if threads.is_some() => options.with_threads(threads.unwrap_or(1)),
         "lenient" => options.with_lenient(true),
         "quality" => options.with_strategy(Strategy::Quality),
+        "even-odd" => options.with_fill_rule(polytri::FillRule::EvenOdd),
         other => panic!("unknown mode {other}"),
     };
     let mut tri = Triangulator::<f64>::new();

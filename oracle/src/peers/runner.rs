@@ -33,6 +33,11 @@ pub enum Implementation {
     /// spread over threads ([`polytri::Triangulator::triangulate_many`]); a single
     /// polygon runs as [`PolytriFast`](Self::PolytriFast) does.
     PolytriThreads,
+    /// polytri, fast strategy, with the even–odd fill rule on all the input's rings at
+    /// once: crossing edges split at rounded crossing points, the region exactly the
+    /// even–odd one (as lyon and i_triangle read their input here). Not in the default
+    /// set: ask for it with `--polytri even-odd`.
+    PolytriEvenOdd,
     /// Another triangulator.
     Peer(Peer),
 }
@@ -47,7 +52,17 @@ impl Implementation {
         Implementation::PolytriThreads,
     ];
 
-    /// Every polytri configuration, then every peer.
+    /// Every polytri configuration: the default ones, then the optional ones.
+    pub const POLYTRI_ALL: [Implementation; 6] = [
+        Implementation::PolytriFast,
+        Implementation::PolytriLenient,
+        Implementation::PolytriQuality,
+        Implementation::PolytriCheck,
+        Implementation::PolytriThreads,
+        Implementation::PolytriEvenOdd,
+    ];
+
+    /// Every default polytri configuration, then every peer.
     pub fn all() -> Vec<Implementation> {
         Self::POLYTRI
             .into_iter()
@@ -73,6 +88,7 @@ impl Implementation {
             Implementation::PolytriQuality => "polytri-quality",
             Implementation::PolytriCheck => "polytri-check",
             Implementation::PolytriThreads => "polytri-threads",
+            Implementation::PolytriEvenOdd => "polytri-even-odd",
             Implementation::Peer(peer) => peer.name(),
         }
     }
@@ -89,7 +105,7 @@ impl FromStr for Implementation {
 
     /// Reads a name as [`Implementation::name`] gives it, or a peer's.
     fn from_str(s: &str) -> Result<Self, Self::Err> {
-        Self::POLYTRI
+        Self::POLYTRI_ALL
             .into_iter()
             .find(|imp| imp.name().eq_ignore_ascii_case(s.trim()))
             .map_or_else(|| s.parse().map(Implementation::Peer), Ok)
@@ -222,6 +238,14 @@ impl Runner {
             ),
             Implementation::PolytriCheck => self.polytri_check(prepared),
             Implementation::PolytriThreads => self.polytri_threads(prepared),
+            Implementation::PolytriEvenOdd => {
+                let input = &prepared.input;
+                let options = polytri::Options::new().with_fill_rule(polytri::FillRule::EvenOdd);
+                (self.polytri)
+                    .triangulate(&input.vertices, &input.ring_starts, &options, &mut self.polytri_out)
+                    .map(|report| report.triangles)
+                    .map_err(|e| e.to_string())
+            }
             Implementation::Peer(Peer::Earcut) => Ok(self.earcut(prepared)),
             Implementation::Peer(Peer::Earcutr) => earcutr(prepared),
             Implementation::Peer(Peer::ITriangle) => Ok(self.i_triangle(prepared)),

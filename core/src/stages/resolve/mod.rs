@@ -279,8 +279,8 @@ fn snap(s: &mut Scratch, lo: [f64; 2], hi: [f64; 2], grid: SnapGrid, reach: f64)
         s.on_edge.clear();
         frame.along(a, b, pad, |c| {
             for &q in s.cells.cell(c) {
-                if q != e.a && q != e.b && near(a, b, s.hot[q as usize], grid) {
-                    let qp = s.hot[q as usize];
+                let qp = s.hot[q as usize];
+                if q != e.a && q != e.b && near(a, b, qp, 2.0 * reach) {
                     if grid.meets_pixel(a, b, qp) {
                         s.on_edge.push(q);
                     }
@@ -292,9 +292,10 @@ fn snap(s: &mut Scratch, lo: [f64; 2], hi: [f64; 2], grid: SnapGrid, reach: f64)
 }
 
 /// Whether the pixel of grid point `q` may meet segment a–b (a float filter: `false`
-/// only when it certainly does not).
-fn near(a: [f64; 2], b: [f64; 2], q: [f64; 2], grid: SnapGrid) -> bool {
-    let w = grid.half_width(q[0]).max(grid.half_width(q[1]));
+/// only when it certainly does not), `w` bounding the pixel's half-width (every pixel's:
+/// twice that of the largest coordinate).
+#[inline]
+fn near(a: [f64; 2], b: [f64; 2], q: [f64; 2], w: f64) -> bool {
     if q[0] + w < a[0].min(b[0])
         || q[0] - w > a[0].max(b[0])
         || q[1] + w < a[1].min(b[1])

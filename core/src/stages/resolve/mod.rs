@@ -280,10 +280,9 @@ fn snap(s: &mut Scratch, lo: [f64; 2], hi: [f64; 2], grid: SnapGrid, reach: f64)
         frame.along(a, b, pad, |c| {
             for &q in s.cells.cell(c) {
                 let qp = s.hot[q as usize];
-                if q != e.a && q != e.b && near(a, b, qp, 2.0 * reach) {
-                    if grid.meets_pixel(a, b, qp) {
-                        s.on_edge.push(q);
-                    }
+                if q != e.a && q != e.b && near(a, b, qp, 2.0 * reach) && grid.meets_pixel(a, b, qp)
+                {
+                    s.on_edge.push(q);
                 }
             }
         });

@@ -161,7 +161,7 @@ fn parse_polytri(s: &str) -> Result<Implementation, String> {
         .into_iter()
         .find(|imp| imp.name().eq_ignore_ascii_case(&full))
         .ok_or_else(|| {
-            format!("unknown polytri configuration '{s}' (known: fast, lenient, quality, check, threads, even-odd)")
+            format!("unknown polytri configuration '{s}' (known: fast, lenient, quality, check, threads, even-odd, seidel)")
         })
 }
 

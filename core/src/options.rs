@@ -10,6 +10,12 @@ pub enum Strategy {
     /// Always clip the ear with the smallest interior angle (Mei et al.), kept in a
     /// priority queue. Fewer slivers, somewhat slower.
     Quality,
+    /// Seidel's randomized incremental trapezoidation (seeded: the same input always gives
+    /// the same triangles), then monotone pieces triangulated in linear time: near-linear
+    /// on every input, where ear clipping can go quadratic (stars, pinwheels). Triangulates
+    /// the even–odd region of the rings — for valid input, the polygon with its holes
+    /// (strict mode still refuses invalid input) — or, with a fill rule, that rule's region.
+    Seidel,
 }
 
 /// How rings relate to each other.

@@ -112,6 +112,7 @@ impl Run {
         let strategy = match self.strategy {
             Strategy::Fast => "fast",
             Strategy::Quality => "quality",
+            Strategy::Seidel => "seidel",
         };
         format!("{strategy}_{}", self.precision.name())
     }

@@ -142,10 +142,11 @@ pub enum Mode {
     Lenient,
 }
 
-/// The lower-case name of a strategy: `fast` or `quality`.
+/// The lower-case name of a strategy: `fast`, `quality` or `seidel`.
 pub fn strategy_name(strategy: Strategy) -> &'static str {
     match strategy {
         Strategy::Quality => "quality",
+        Strategy::Seidel => "seidel",
         _ => "fast",
     }
 }

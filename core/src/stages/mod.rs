@@ -11,4 +11,5 @@ pub(crate) mod load;
 pub(crate) mod lobes;
 pub(crate) mod nest;
 pub(crate) mod resolve;
+pub(crate) mod seidel;
 pub(crate) mod touch;

@@ -4,16 +4,21 @@
 use super::lenient::{self, Outcome, Reruns};
 use super::pipeline::Stages;
 use crate::context::Context;
-use crate::geom::{Coord, SnapGrid};
-use crate::stages::{load, resolve};
-use crate::{Error, FillRule, Nesting, Options};
+use crate::geom::{orient2d, Coord, Orientation, Point, SnapGrid};
+use crate::stages::{load, resolve, seidel};
+use crate::{Error, FillRule, Nesting, Options, Strategy};
 
 /// The fill path's buffers.
 #[derive(Debug, Default)]
 pub(crate) struct Scratch {
     vertices: Vec<[f64; 2]>,
     resolve: resolve::Scratch,
+    seidel: seidel::Scratch,
 }
+
+/// The seed of `Strategy::Seidel`'s random order: fixed, so the same input always gives
+/// the same triangles.
+const SEIDEL_SEED: u64 = 0x5e1d_e12c;
 
 /// Triangulates the region of `rule`: the triangles index `vertices`, then the vertices
 /// added where edges cross (`cx.added`).
@@ -51,11 +56,28 @@ pub(crate) fn triangulate<T: Coord>(
         cx.added = added;
         return Err(e);
     }
+    let r = &fs.resolve;
+    if options.strategy == Strategy::Seidel {
+        cx.added = added;
+        let (ids, starts) = (&r.ring_ids, &r.ring_starts);
+        seidel::triangulate(&mut fs.seidel, &r.hot, starts, ids, SEIDEL_SEED, out)?;
+        for t in out.iter_mut() {
+            for v in t.iter_mut() {
+                *v = r.hot_out[*v as usize];
+            }
+        }
+        cx.dropped.clear();
+        let (polygons, holes) = count_rings(&r.hot, starts, ids);
+        return Ok(Outcome {
+            polygons,
+            holes,
+            deviation: 0.0,
+        });
+    }
     // valid rings: strict, containment decides
     let inner = Options::new()
         .with_strategy(options.strategy)
         .with_nesting(Nesting::Auto);
-    let r = &fs.resolve;
     let made = lenient::triangulate(cx, st, re, &r.rings, &r.ring_starts, &inner, out);
     cx.added = added;
     let made = made.map_err(|e| match e {
@@ -70,4 +92,30 @@ pub(crate) fn triangulate<T: Coord>(
     // the vertices left out are the resolved rings', not the input's
     cx.dropped.clear();
     Ok(made)
+}
+
+/// Outer rings (counter-clockwise) and holes (clockwise) among simple rings: the turn at
+/// each ring's lowest-leftmost vertex, which is convex.
+fn count_rings(points: &[[f64; 2]], starts: &[usize], ids: &[u32]) -> (usize, usize) {
+    let (mut outer, mut holes) = (0, 0);
+    for (k, &start) in starts.iter().enumerate() {
+        let ring = &ids[start..starts.get(k + 1).copied().unwrap_or(ids.len())];
+        let p = |i: usize| {
+            let q = points[ring[i % ring.len()] as usize];
+            Point::new(q[0], q[1])
+        };
+        let Some(m) = (0..ring.len()).min_by(|&i, &j| {
+            let (a, b) = (p(i), p(j));
+            (a.x, a.y)
+                .partial_cmp(&(b.x, b.y))
+                .unwrap_or(core::cmp::Ordering::Equal)
+        }) else {
+            continue;
+        };
+        match orient2d(p(m + ring.len() - 1), p(m), p(m + 1)) {
+            Orientation::CounterClockwise => outer += 1,
+            _ => holes += 1,
+        }
+    }
+    (outer, holes)
 }

@@ -36,7 +36,18 @@ impl Worker {
     ) -> Result<lenient::Outcome, Error> {
         let (cx, stages, reruns) = (&mut self.cx, &mut self.stages, &mut self.reruns);
         cx.added.clear();
-        match options.fill_rule {
+        let mut fill_rule = options.fill_rule;
+        if options.strategy == crate::Strategy::Seidel && fill_rule.is_none() {
+            // Seidel reads the rings even–odd: for valid input, the polygon and its holes;
+            // strict mode first refuses what is not valid, as the ear clippers would
+            if !options.lenient {
+                cx.keep_collinear = false;
+                cx.reset(false);
+                pipeline::check_input(cx, stages, vertices, ring_starts, options.nesting, false)?;
+            }
+            fill_rule = Some(crate::FillRule::EvenOdd);
+        }
+        match fill_rule {
             Some(rule) => fill::triangulate(
                 cx,
                 stages,

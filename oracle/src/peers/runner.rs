@@ -38,6 +38,9 @@ pub enum Implementation {
     /// even–odd one (as lyon and i_triangle read their input here). Not in the default
     /// set: ask for it with `--polytri even-odd`.
     PolytriEvenOdd,
+    /// polytri with [`polytri::Strategy::Seidel`] (trapezoidation), strict. Not in the
+    /// default set: ask for it with `--polytri seidel`.
+    PolytriSeidel,
     /// Another triangulator.
     Peer(Peer),
 }
@@ -53,13 +56,14 @@ impl Implementation {
     ];
 
     /// Every polytri configuration: the default ones, then the optional ones.
-    pub const POLYTRI_ALL: [Implementation; 6] = [
+    pub const POLYTRI_ALL: [Implementation; 7] = [
         Implementation::PolytriFast,
         Implementation::PolytriLenient,
         Implementation::PolytriQuality,
         Implementation::PolytriCheck,
         Implementation::PolytriThreads,
         Implementation::PolytriEvenOdd,
+        Implementation::PolytriSeidel,
     ];
 
     /// Every default polytri configuration, then every peer.
@@ -89,6 +93,7 @@ impl Implementation {
             Implementation::PolytriCheck => "polytri-check",
             Implementation::PolytriThreads => "polytri-threads",
             Implementation::PolytriEvenOdd => "polytri-even-odd",
+            Implementation::PolytriSeidel => "polytri-seidel",
             Implementation::Peer(peer) => peer.name(),
         }
     }
@@ -238,6 +243,10 @@ impl Runner {
             ),
             Implementation::PolytriCheck => self.polytri_check(prepared),
             Implementation::PolytriThreads => self.polytri_threads(prepared),
+            Implementation::PolytriSeidel => self.polytri(
+                prepared,
+                polytri::Options::new().with_strategy(polytri::Strategy::Seidel),
+            ),
             Implementation::PolytriEvenOdd => {
                 let input = &prepared.input;
                 let options = polytri::Options::new().with_fill_rule(polytri::FillRule::EvenOdd);

@@ -144,7 +144,8 @@ pub(crate) fn clip(
         while let Some(start) = s.pending.pop() {
             let (mut clipper, start) = Clipper::new(cx, s, out, start, avoid_crossed);
             match strategy {
-                Strategy::Fast => clipper.fast(start)?,
+                // (Seidel never comes here: the triangulator gives it its own stage)
+                Strategy::Fast | Strategy::Seidel => clipper.fast(start)?,
                 Strategy::Quality => clipper.quality(start)?,
             }
         }

@@ -56,9 +56,9 @@ struct Edge {
 #[derive(Debug, Default)]
 pub(crate) struct Scratch {
     /// Distinct positions: the input's (sorted), then the added crossings.
-    hot: Vec<[f64; 2]>,
+    pub hot: Vec<[f64; 2]>,
     /// The output vertex index of each hot point.
-    hot_out: Vec<u32>,
+    pub hot_out: Vec<u32>,
     /// Each input vertex's hot point.
     vertex_hot: Vec<u32>,
     edges: Vec<Edge>,
@@ -70,8 +70,10 @@ pub(crate) struct Scratch {
     fragments: Vec<(u32, u32, i32)>,
     winding: winding::Scratch,
     trace: trace::Scratch,
-    /// The result: rings of positions, their starts, and each position's output index.
+    /// The result: rings of positions, their starts, and each position's output index;
+    /// and the same rings as distinct points (`hot`, whose output indices are `hot_out`).
     pub rings: Vec<[f64; 2]>,
+    pub ring_ids: Vec<u32>,
     pub ring_starts: Vec<usize>,
     pub map: Vec<u32>,
 }
@@ -88,6 +90,7 @@ pub(crate) fn resolve(
     added: &mut Vec<Added>,
 ) -> Result<(), Error> {
     s.rings.clear();
+    s.ring_ids.clear();
     s.ring_starts.clear();
     s.map.clear();
     if let Some(v) = vertices
@@ -124,6 +127,7 @@ pub(crate) fn resolve(
         s.ring_starts.push(s.rings.len());
         for &h in ring {
             s.rings.push(s.hot[h as usize]);
+            s.ring_ids.push(h);
             s.map.push(s.hot_out[h as usize]);
         }
     }

@@ -32,9 +32,15 @@ use serde::{Deserialize, Serialize};
 use crate::input::{Input, Nesting};
 use crate::metrics;
 
+mod fill;
 mod geo;
 mod mesh;
 pub(crate) mod region;
+
+pub use fill::{
+    check_fill, fill_area, fill_area_float, verify_fill, FillArea, EXACT_MAX_CROSSINGS,
+    EXACT_MAX_EDGES, FLOAT_RELATIVE_TOLERANCE,
+};
 
 use mesh::Mesh;
 use region::Region;

@@ -49,7 +49,10 @@ pub mod series;
 pub mod shrink;
 pub mod strategy;
 
-pub use check::{check, check_with, verify, CdtComparison, Check, CheckOptions, Verdict};
+pub use check::{
+    check, check_fill, check_with, fill_area, fill_area_float, verify, verify_fill, CdtComparison,
+    Check, CheckOptions, FillArea, Verdict,
+};
 
 /// The item of `all` whose `name` is `s` (trimmed, any case) — the `FromStr` of the
 /// harness's named enums; the error lists the known names after `"unknown {what}"`.

@@ -14,7 +14,7 @@
 //! | `orientation` | every triangle is strictly counter-clockwise (exact)                  |
 //! | `overlap`     | no two triangles' interiors meet (exact)                              |
 //! | `inside`      | the winding number of the input rings at every triangle's centroid is one the rule accepts (exact); with added vertices, a centroid within δ of an input edge is excused |
-//! | `area`        | Σ triangle areas (exact) = the region's area by a slab decomposition: exactly without added vertices, within `2 · δ · (length of the input's edges)` with them |
+//! | `area`        | Σ triangle areas (exact) = the region's area by a slab decomposition: exactly without added vertices, within `2 · δ · (length of the input's edges passing within 2δ of a vertex not their own)` with them |
 //!
 //! δ is `4 · ulp(M)`, `M` the largest coordinate magnitude of the input, the ulp of `f32`
 //! when every coordinate (input and added) is an `f32` value and of `f64` otherwise: snap
@@ -335,9 +335,30 @@ impl FillInput {
         })
     }
 
-    /// The total length of the input's edges.
+    /// The total length of the input's edges that snap rounding may have moved: those
+    /// passing within 2δ of a vertex (input or added) other than their own ends — a
+    /// rounded edge is rerouted only through pixels it meets. On inputs too large for the
+    /// pairwise scan, every edge.
     fn edge_length(&self) -> f64 {
-        self.edges.iter().map(|&(a, b)| dist(a, b)).sum()
+        if self.edges.len().saturating_mul(self.pts.len()) > 50_000_000 {
+            return self.edges.iter().map(|&(a, b)| dist(a, b)).sum();
+        }
+        let reach = 2.0 * self.delta;
+        let moved = |&(a, b): &(P, P)| {
+            self.pts.iter().any(|&q| {
+                q != a && q != b && {
+                    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+                    let len2 = dx * dx + dy * dy;
+                    let t = (((q[0] - a[0]) * dx + (q[1] - a[1]) * dy) / len2).clamp(0.0, 1.0);
+                    dist(q, [a[0] + t * dx, a[1] + t * dy]) <= reach
+                }
+            })
+        };
+        self.edges
+            .iter()
+            .filter(|e| moved(e))
+            .map(|&(a, b)| dist(a, b))
+            .sum()
     }
 }
 

@@ -166,9 +166,11 @@ fn distinct_positions(s: &mut Scratch, vertices: &[[f64; 2]]) {
 /// Every ring's edges between distinct positions.
 fn collect_edges(s: &mut Scratch, vertices: &[[f64; 2]], ring_starts: &[usize]) {
     s.edges.clear();
+    let n = vertices.len();
     for (r, &start) in ring_starts.iter().enumerate() {
-        let end = ring_starts.get(r + 1).copied().unwrap_or(vertices.len());
-        for i in start..end {
+        // (`load` accepts any ring starts when there are no vertices)
+        let end = ring_starts.get(r + 1).copied().unwrap_or(n).min(n);
+        for i in start.min(end)..end {
             let j = if i + 1 < end { i + 1 } else { start };
             let (a, b) = (s.vertex_hot[i], s.vertex_hot[j]);
             if a != b {
@@ -494,6 +496,16 @@ mod tests {
         // the pentagram's centre pentagon has winding 2: nonzero − even-odd = abs ≥ 2
         assert!((a[1] - a[0] - a[4]).abs() < 1e-9 * a[1], "{a:?}");
         assert!(a[4] > 0.0 && a[0] > a[4] && a[3] == 0.0 && a[2] == a[1]);
+    }
+
+    #[test]
+    fn ring_starts_without_vertices_give_nothing() {
+        let mut s = Scratch::default();
+        let grid = SnapGrid { f32: false };
+        for starts in [&[0, 1][..], &[0, 5, 7], &[]] {
+            resolve(&mut s, &[], starts, FillRule::EvenOdd, grid, &mut Vec::new()).unwrap();
+            assert!(s.rings.is_empty());
+        }
     }
 
     #[test]

@@ -113,14 +113,31 @@ pub fn write_obj<W: Write>(
     Ok(())
 }
 
-/// The result JSON: `{"vertices": [[x, y], …], "triangles": [[a, b, c], …]}`.
+/// A vertex added where edges cross (with `--fill-rule`), numbered after the file's.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Added {
+    /// Its index in the written vertices.
+    pub vertex: usize,
+    /// Its coordinates (in the precision triangulated in, widened to f64).
+    #[serde(skip)]
+    pub position: [f64; 2],
+    /// Two edges crossing there, each by the flat index of the vertex it starts at.
+    pub edges: [usize; 2],
+}
+
+/// The result JSON: `{"vertices": [[x, y], …], "triangles": [[a, b, c], …]}`, and with a
+/// fill rule `"added": [{"vertex": i, "edges": [a, b]}, …]`.
 #[derive(Serialize)]
 struct ResultJson<'a> {
     vertices: &'a [[f64; 2]],
     triangles: &'a [[u32; 3]],
+    #[serde(skip_serializing_if = "Option::is_none")]
+    added: Option<&'a [Added]>,
 }
 
-/// Writes the result JSON on one line, then a newline.
+/// Writes the result JSON on one line, then a newline. `added` (with a fill rule: the
+/// vertices added where edges cross, which `vertices` ends with) becomes an `"added"`
+/// list; without one the JSON is as it always was.
 ///
 /// Vertices are written as parsed (a non-finite one, only possible with `--lenient` from
 /// WKT or the f32 conversion, becomes `null`, as JSON has no NaN).
@@ -128,12 +145,14 @@ pub fn write_json<W: Write>(
     mut w: W,
     vertices: &[[f64; 2]],
     triangles: &[[u32; 3]],
+    added: Option<&[Added]>,
 ) -> io::Result<()> {
     serde_json::to_writer(
         &mut w,
         &ResultJson {
             vertices,
             triangles,
+            added,
         },
     )
     .map_err(io::Error::from)?;
@@ -155,7 +174,8 @@ const STYLE: &str = "\
 .tri{fill:#cfe0f7;fill-opacity:.75;stroke:#4a6fa5;stroke-width:.5;stroke-linejoin:round;vector-effect:non-scaling-stroke}
 .outer{fill:none;stroke:#111;stroke-width:1.8;stroke-linejoin:round;vector-effect:non-scaling-stroke}
 .hole{fill:none;stroke:#c0392b;stroke-width:1.8;stroke-dasharray:6 3;stroke-linejoin:round;vector-effect:non-scaling-stroke}
-.dropped{fill:#e67e22}";
+.dropped{fill:#e67e22}
+.added{fill:#e00;stroke:#fff;stroke-width:.5;vector-effect:non-scaling-stroke}";
 
 /// Maps input coordinates (y up, any scale) to canvas coordinates (y down, 0..CANVAS).
 struct Frame {
@@ -221,18 +241,29 @@ fn num(value: f64) -> String {
 }
 
 /// Writes an SVG picture: the triangles (light fill, thin strokes), the file's rings on
-/// top (outer boundaries solid, holes dashed red), and dropped vertices as orange dots.
+/// top (outer boundaries solid, holes dashed red), dropped vertices as orange dots, and
+/// the vertices `added` where edges cross (with a fill rule; triangles index them after
+/// the layout's) as small red dots.
 ///
 /// Points that are not finite are left out of the picture.
 pub fn write_svg<W: Write>(
     mut w: W,
     layout: &Layout,
+    added: &[[f64; 2]],
     triangles: &[[u32; 3]],
     groups: Option<&[usize]>,
     dropped: &[usize],
 ) -> io::Result<()> {
     let frame = Frame::fit(&layout.vertices);
-    let point = |i: usize| layout.vertices.get(i).and_then(|&v| frame.map(v));
+    let n = layout.vertices.len();
+    let point = |i: usize| {
+        let v = if i < n {
+            layout.vertices.get(i)
+        } else {
+            added.get(i - n)
+        };
+        v.and_then(|&v| frame.map(v))
+    };
     let (w_box, h_box) = (frame.width + 2.0 * MARGIN, frame.height + 2.0 * MARGIN);
     writeln!(
         w,
@@ -298,6 +329,13 @@ pub fn write_svg<W: Write>(
         }
         writeln!(w, "</g>")?;
     }
+    if !added.is_empty() {
+        writeln!(w, r#"<g class="added">"#)?;
+        for (x, y) in (n..n + added.len()).filter_map(point) {
+            writeln!(w, r#"<circle cx="{}" cy="{}" r="2.5"/>"#, num(x), num(y))?;
+        }
+        writeln!(w, "</g>")?;
+    }
     writeln!(w, "</svg>")?;
     w.flush()
 }
@@ -313,12 +351,27 @@ mod tests {
             &mut out,
             &[[0.0, 0.0], [1.5, 0.0], [1.0, f64::NAN]],
             &[[0, 1, 2]],
+            None,
         )
         .expect("in memory");
         let text = String::from_utf8(out).expect("utf-8");
         assert_eq!(
             text,
             "{\"vertices\":[[0.0,0.0],[1.5,0.0],[1.0,null]],\"triangles\":[[0,1,2]]}\n"
+        );
+        // with a fill rule: the added vertices listed after the triangles
+        let mut out = Vec::new();
+        let added = Added {
+            vertex: 4,
+            position: [1.0, 1.0],
+            edges: [0, 2],
+        };
+        let bow_tie = [[0.0, 0.0], [2.0, 2.0], [2.0, 0.0], [0.0, 2.0], [1.0, 1.0]];
+        write_json(&mut out, &bow_tie, &[[0, 4, 3]], Some(&[added])).expect("in memory");
+        let text = String::from_utf8(out).expect("utf-8");
+        assert!(
+            text.ends_with("\"triangles\":[[0,4,3]],\"added\":[{\"vertex\":4,\"edges\":[0,2]}]}\n"),
+            "{text}"
         );
     }
 
@@ -361,7 +414,7 @@ mod tests {
         ]];
         let layout = Layout::new(&polygons);
         let mut out = Vec::new();
-        write_svg(&mut out, &layout, &[[0, 1, 4], [9, 9, 9]], None, &[5]).expect("in memory");
+        write_svg(&mut out, &layout, &[], &[[0, 1, 4], [9, 9, 9]], None, &[5]).expect("in memory");
         let text = String::from_utf8(out).expect("utf-8");
         assert!(text.starts_with("<svg "), "{text}");
         assert!(text.trim_end().ends_with("</svg>"));
@@ -378,12 +431,36 @@ mod tests {
     }
 
     #[test]
+    fn svg_marks_added_vertices() {
+        let bow_tie = vec![[0.0, 0.0], [2.0, 2.0], [2.0, 0.0], [0.0, 2.0]];
+        let layout = Layout::new(&[vec![bow_tie]]);
+        let mut out = Vec::new();
+        write_svg(
+            &mut out,
+            &layout,
+            &[[1.0, 1.0]],
+            &[[0, 4, 3], [4, 1, 2]],
+            None,
+            &[],
+        )
+        .expect("in memory");
+        let text = String::from_utf8(out).expect("utf-8");
+        // both triangles drawn through the added vertex, which is one red dot
+        assert_eq!(text.matches("<polygon ").count(), 2, "{text}");
+        assert!(
+            text.contains("<g class=\"added\">\n<circle cx=\"500\" cy=\"500\" r=\"2.5\"/>"),
+            "{text}"
+        );
+    }
+
+    #[test]
     fn svg_colours_each_group() {
         let square = vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
         let layout = Layout::new(&[vec![square]]);
         let fill = |groups: Option<&[usize]>| {
             let mut out = Vec::new();
-            write_svg(&mut out, &layout, &[[0, 1, 2], [0, 2, 3]], groups, &[]).expect("in memory");
+            write_svg(&mut out, &layout, &[], &[[0, 1, 2], [0, 2, 3]], groups, &[])
+                .expect("in memory");
             let text = String::from_utf8(out).expect("utf-8");
             let fills: Vec<String> = text
                 .split("fill:hsl(")

@@ -1,12 +1,13 @@
 //! `polytri triangulate`: read a file of polygons, triangulate them all, write the result.
 
+use std::borrow::Cow;
 use std::fs::File;
 use std::io::{self, BufWriter, Write};
 use std::ops::Range;
 use std::path::{Path, PathBuf};
 
 use clap::ValueEnum;
-use polytri::{Coord, Error, Nesting, Options, Strategy, Triangulator};
+use polytri::{Coord, Error, FillRule, Nesting, Options, Strategy, Triangulator};
 
 use crate::input::{self, Input};
 use crate::layout::Layout;
@@ -24,7 +25,17 @@ z kept in the output (JSON, OBJ, GeoJSON); further coordinates are ignored. A \
 repeated closing point is dropped, and other geometry types are skipped with a warning.
 
 Output JSON: {\"vertices\": [[x, y], …], \"triangles\": [[a, b, c], …]}, the vertices in \
-file order, triangles counter-clockwise with y up.
+file order, triangles counter-clockwise with y up. With --fill-rule, the vertices added \
+where edges cross follow the file's in \"vertices\", and \"added\": [{\"vertex\": i, \
+\"edges\": [a, b]}, …] names each one's index and two edges crossing there (each by the \
+vertex it starts at); SVG marks them with red dots, OBJ and GeoJSON use them as vertices.
+
+Fill rules (--fill-rule): the rings may cross themselves and each other and overlap \
+anywhere; a point's winding number counts how often the rings, each in its own direction, \
+wind counter-clockwise round it, and the region is where the rule accepts it: even-odd \
+(odd), nonzero (not 0), positive (above 0), negative (below 0), abs-geq-two (2 or more \
+either way: where rings overlap). Which ring is a hole then follows from the windings \
+alone: a hole must run the other way round from its outer ring, except with even-odd.
 
 Errors name the place in the file: polygon (when there are several), ring and vertex, \
 each counted from 0. Exit status: 0 on success, 1 on bad input, 2 on bad usage.")]
@@ -59,6 +70,13 @@ pub struct Args {
     /// refusing the input; the summary counts the repairs
     #[arg(long)]
     pub lenient: bool,
+
+    /// Read the rings by a fill rule: they may cross and overlap anywhere, and the region is
+    /// where the winding number (how often the rings, each in its own direction, wind
+    /// counter-clockwise round a point) satisfies RULE. Crossing points are added as
+    /// vertices after the file's. --nesting does not apply
+    #[arg(long, value_enum, value_name = "RULE", conflicts_with = "lenient")]
+    pub fill_rule: Option<FillRuleArg>,
 
     /// Triangulate all rings of the file together, as one set of rings (glyph outlines
     /// that come as one soup across the file), instead of each polygon on its own
@@ -118,6 +136,37 @@ pub enum Precision {
     F32,
 }
 
+/// `--fill-rule`, mirroring [`polytri::FillRule`] (names as [`FillRule::name`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum FillRuleArg {
+    /// Inside where the winding number is odd: an overlap of two rings is empty.
+    EvenOdd,
+    /// Inside where the winding number is not 0: rings winding the same way merge, one
+    /// winding the other way inside them cuts a hole.
+    #[value(name = "nonzero")]
+    NonZero,
+    /// Inside where the winding number is above 0: counter-clockwise rings add,
+    /// clockwise ones subtract.
+    Positive,
+    /// Inside where the winding number is below 0: the clockwise rings' side.
+    Negative,
+    /// Inside where the winding number is 2 or more, or -2 or less: where rings overlap.
+    AbsGeqTwo,
+}
+
+impl FillRuleArg {
+    /// The rule.
+    pub fn rule(self) -> FillRule {
+        match self {
+            FillRuleArg::EvenOdd => FillRule::EvenOdd,
+            FillRuleArg::NonZero => FillRule::NonZero,
+            FillRuleArg::Positive => FillRule::Positive,
+            FillRuleArg::Negative => FillRule::Negative,
+            FillRuleArg::AbsGeqTwo => FillRule::AbsGeqTwo,
+        }
+    }
+}
+
 /// `--nesting`, mirroring [`polytri::Nesting`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum NestingArg {
@@ -137,11 +186,15 @@ impl Args {
             NestingArg::Auto => Nesting::Auto,
             NestingArg::FirstOuter => Nesting::FirstIsOuter,
         };
-        Options::new()
+        let options = Options::new()
             .with_strategy(strategy)
             .with_nesting(nesting)
             .with_lenient(self.lenient)
-            .with_threads(self.threads)
+            .with_threads(self.threads);
+        match self.fill_rule {
+            Some(rule) => options.with_fill_rule(rule.rule()),
+            None => options,
+        }
     }
 
     fn output_format(&self) -> OutputFormat {
@@ -201,8 +254,13 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             "{name}: --merge takes rings in the plane; these have z (each polygon is triangulated in its own plane)"
         )));
     }
+    if z.is_some() && args.fill_rule.is_some() {
+        return Err(Failure(format!(
+            "{name}: --fill-rule takes rings in the plane; these have z (added crossing points would have none)"
+        )));
+    }
     let pieces = pieces(&layout, args.merge);
-    let results = match (args.precision, &z) {
+    let mut results = match (args.precision, &z) {
         (Precision::F64, Some(z)) => {
             triangulate_pieces_3d(&layout.vertices, z, &layout, &pieces, &options)
         }
@@ -225,8 +283,10 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             triangulate_pieces(&narrow, &layout, &pieces, &options)
         }
     };
+    number_added(&mut results, layout.vertices.len())
+        .map_err(|count| Failure(format!("{name}: {count} vertices with the added ones are more than u32 triangle indices can address")))?;
     let describe = |refused: &Refusal| {
-        let what = describe_error(refused, &layout, args.precision);
+        let what = describe_error(refused, &layout, args.precision, args.fill_rule.is_some());
         match feature_of(&input, &layout, refused.ring_offset) {
             Some(feature) => format!("{feature}: {what}"),
             None => what,
@@ -243,7 +303,13 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             describe(refused)
         ));
     }
-    let outcome = Outcome::gather(&results);
+    let mut outcome = Outcome::gather(&results);
+    // with a fill rule the JSON always lists the added vertices (maybe none), else never
+    if args.fill_rule.is_some() {
+        outcome.added.get_or_insert_with(Vec::new);
+    } else {
+        outcome.added = None;
+    }
     write_result(
         args,
         &input,
@@ -292,6 +358,9 @@ struct Piece {
     /// Flat indices of the vertices no triangle uses.
     dropped: Vec<usize>,
     repairs: usize,
+    /// The vertices added where edges cross (with --fill-rule): piece-local in `vertex`
+    /// until [`number_added`] numbers them after the file's.
+    added: Vec<output::Added>,
 }
 
 /// All triangulations of one run, with indices into the layout's vertices.
@@ -305,6 +374,9 @@ struct Outcome {
     repairs: usize,
     /// Pieces refused (with --keep-going).
     refused: usize,
+    /// The vertices added where edges cross, numbered after the file's; `None` without
+    /// --fill-rule.
+    added: Option<Vec<output::Added>>,
 }
 
 impl Outcome {
@@ -319,6 +391,7 @@ impl Outcome {
                     outcome.holes += piece.holes;
                     outcome.dropped.extend_from_slice(&piece.dropped);
                     outcome.repairs += piece.repairs;
+                    (outcome.added.get_or_insert_with(Vec::new)).extend_from_slice(&piece.added);
                 }
                 Err(_) => outcome.refused += 1,
             }
@@ -329,20 +402,73 @@ impl Outcome {
 
 impl Piece {
     /// What the triangulator made of the piece of vertices `span`: its `triangles` and
-    /// `report`, indices made flat.
-    fn of(report: &polytri::Report<'_>, triangles: &[[u32; 3]], span: &Range<usize>) -> Self {
-        // Fits: the caller checked that all vertices are addressable by u32.
-        let offset = span.start as u32;
+    /// `report`, indices made flat. Added vertices (with a fill rule) are numbered from
+    /// `first_added`, the number of the file's vertices, as if this piece were the only one
+    /// to add any: [`number_added`] moves them after the pieces before.
+    fn of(
+        report: &polytri::Report<'_>,
+        triangles: &[[u32; 3]],
+        span: &Range<usize>,
+        first_added: usize,
+    ) -> Self {
+        let len = span.len();
+        let flat = |i: u32| {
+            let i = i as usize;
+            // Fits: the caller checked that the file's vertices are addressable by u32, and
+            // `number_added` that the added ones are too.
+            (if i < len {
+                span.start + i
+            } else {
+                first_added + (i - len)
+            })
+            .min(u32::MAX as usize) as u32
+        };
         Piece {
-            triangles: triangles.iter().map(|t| t.map(|i| i + offset)).collect(),
+            triangles: triangles.iter().map(|t| t.map(flat)).collect(),
             polygons: report.polygons,
             holes: report.holes,
             dropped: (report.dropped.iter())
                 .map(|d| d.vertex as usize + span.start)
                 .collect(),
             repairs: report.repairs.len(),
+            added: (report.added.iter().enumerate())
+                .map(|(k, a)| output::Added {
+                    vertex: k,
+                    position: a.position,
+                    edges: a.edges.map(|e| e as usize + span.start),
+                })
+                .collect(),
         }
     }
+}
+
+/// Numbers the vertices every piece added after the file's `first` vertices, piece after
+/// piece, and points the triangles at them (each piece numbered its own from `first`).
+///
+/// # Errors
+///
+/// The number of all vertices, when it is more than `u32` indices address.
+fn number_added(results: &mut [Result<Piece, Refusal>], first: usize) -> Result<(), usize> {
+    let total = first
+        + (results.iter().flatten())
+            .map(|p| p.added.len())
+            .sum::<usize>();
+    if u32::try_from(total).is_err() {
+        return Err(total);
+    }
+    let mut next = first;
+    for piece in results.iter_mut().flatten() {
+        for i in piece.triangles.iter_mut().flatten() {
+            if *i as usize >= first {
+                *i += (next - first) as u32;
+            }
+        }
+        for (k, added) in piece.added.iter_mut().enumerate() {
+            added.vertex = next + k;
+        }
+        next += piece.added.len();
+    }
+    Ok(())
 }
 
 /// An error of the triangulator with what to add to its indices to make them flat: each
@@ -400,7 +526,7 @@ fn triangulate_pieces<T: Coord>(
     pieces
         .map(|(((rings, span), result), triangles)| {
             let report = result.map_err(|error| Refusal::at(error, rings, span))?;
-            Ok(Piece::of(&report, triangles, span))
+            Ok(Piece::of(&report, triangles, span, layout.vertices.len()))
         })
         .collect()
 }
@@ -442,16 +568,26 @@ fn triangulate_pieces_3d<T: Coord>(
             let (report, _) = tri
                 .triangulate_3d(&xyz, &starts, options, &mut out)
                 .map_err(|error| Refusal::at(error, rings, span))?;
-            Ok(Piece::of(&report, &out, span))
+            Ok(Piece::of(&report, &out, span, layout.vertices.len()))
         })
         .collect()
 }
 
 /// Says what the triangulator refused and where in the file.
-fn describe_error(refusal: &Refusal, layout: &Layout, precision: Precision) -> String {
+fn describe_error(
+    refusal: &Refusal,
+    layout: &Layout,
+    precision: Precision,
+    fill_rule: bool,
+) -> String {
     let vertex = |v: usize| layout.describe_vertex(v + refusal.vertex_offset);
     let ring = |r: usize| layout.describe_ring(r + refusal.ring_offset);
-    let hint = "(--lenient makes the best of it)";
+    // with a fill rule only bad numbers are refused, and --lenient does not apply
+    let hint = if fill_rule {
+        ""
+    } else {
+        " (--lenient makes the best of it)"
+    };
     match refusal.error {
         Error::NonFinite { vertex: v } => {
             let finite_f64 = layout
@@ -459,14 +595,18 @@ fn describe_error(refusal: &Refusal, layout: &Layout, precision: Precision) -> S
                 .get(v + refusal.vertex_offset)
                 .is_some_and(|p| p[0].is_finite() && p[1].is_finite());
             if finite_f64 && precision == Precision::F32 {
-                format!("{}: coordinate out of f32 range {hint}", vertex(v))
+                format!("{}: coordinate out of f32 range{hint}", vertex(v))
             } else {
-                format!("{}: coordinate is NaN or infinite {hint}", vertex(v))
+                format!("{}: coordinate is NaN or infinite{hint}", vertex(v))
             }
         }
+        Error::CoordinateRange { vertex: v } => format!(
+            "{}: coordinate outside what fill rules compute exactly (0, or a magnitude from 2^-248 to 2^100)",
+            vertex(v)
+        ),
         Error::EdgesCross { edge_a, edge_b, .. } => {
             format!(
-                "edges cross: the edge from {} and the edge from {} {hint}",
+                "edges cross: the edge from {} and the edge from {}{hint}",
                 vertex(edge_a),
                 vertex(edge_b)
             )
@@ -476,7 +616,7 @@ fn describe_error(refusal: &Refusal, layout: &Layout, precision: Precision) -> S
                 .locate(v + refusal.vertex_offset)
                 .map_or(v, |at| at.vertex);
             format!(
-                "{} overlaps another ring: it lies on that ring's boundary (e.g. at vertex {corner}) and would cover its inside twice {hint}",
+                "{} overlaps another ring: it lies on that ring's boundary (e.g. at vertex {corner}) and would cover its inside twice{hint}",
                 ring(r)
             )
         }
@@ -488,13 +628,13 @@ fn describe_error(refusal: &Refusal, layout: &Layout, precision: Precision) -> S
         } => {
             if ring_a == ring_b {
                 format!(
-                    "{} crosses itself at {}, where it passes twice {hint}",
+                    "{} crosses itself at {}, where it passes twice{hint}",
                     ring(ring_a),
                     vertex(v)
                 )
             } else {
                 format!(
-                    "{} and {} cross each other at {}, where both pass {hint}",
+                    "{} and {} cross each other at {}, where both pass{hint}",
                     ring(ring_a),
                     ring(ring_b),
                     vertex(v)
@@ -503,7 +643,7 @@ fn describe_error(refusal: &Refusal, layout: &Layout, precision: Precision) -> S
         }
         Error::HoleOutside { ring: r } => {
             format!(
-                "{} is a hole outside its outer ring, or inside another hole {hint}",
+                "{} is a hole outside its outer ring, or inside another hole{hint}",
                 ring(r)
             )
         }
@@ -523,18 +663,31 @@ fn write_result(
     results: &[Result<Piece, Refusal>],
     outcome: &Outcome,
 ) -> Result<(), Failure> {
+    // the file's vertices, then those added where edges cross (with --fill-rule)
+    let added = outcome.added.as_deref();
+    let added_points: Vec<[f64; 2]> = added
+        .unwrap_or_default()
+        .iter()
+        .map(|a| a.position)
+        .collect();
+    let all_vertices: Cow<'_, [[f64; 2]]> = if added_points.is_empty() {
+        Cow::Borrowed(&layout.vertices)
+    } else {
+        Cow::Owned([&layout.vertices[..], &added_points].concat())
+    };
     let write = |w: &mut dyn Write| -> io::Result<()> {
         match args.output_format() {
             OutputFormat::Json => match z {
                 Some(z) => output::write_json_3d(w, &layout.vertices, z, &outcome.triangles),
-                None => output::write_json(w, &layout.vertices, &outcome.triangles),
+                None => output::write_json(w, &all_vertices, &outcome.triangles, added),
             },
-            OutputFormat::Obj => output::write_obj(w, &layout.vertices, z, &outcome.triangles),
+            OutputFormat::Obj => output::write_obj(w, &all_vertices, z, &outcome.triangles),
             OutputFormat::Svg => {
                 let groups = groups(input, layout, pieces, results);
                 output::write_svg(
                     w,
                     layout,
+                    &added_points,
                     &outcome.triangles,
                     groups.as_deref(),
                     &outcome.dropped,
@@ -542,7 +695,7 @@ fn write_result(
             }
             OutputFormat::Geojson => {
                 let features = features(input, layout, pieces, results, args.merge);
-                output::write_geojson(w, &layout.vertices, z, &features, args.per_triangle)
+                output::write_geojson(w, &all_vertices, z, &features, args.per_triangle)
             }
         }
     };
@@ -670,6 +823,9 @@ fn summary(outcome: &Outcome) -> String {
         plural(outcome.dropped.len(), "dropped vertex", "dropped vertices"),
         plural(outcome.repairs, "repair", "repairs"),
     ];
+    if let Some(added) = &outcome.added {
+        parts.push(plural(added.len(), "added vertex", "added vertices"));
+    }
     if outcome.refused > 0 {
         parts.push(format!("{} refused", outcome.refused));
     }
@@ -679,6 +835,7 @@ fn summary(outcome: &Outcome) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use output::Added;
 
     #[test]
     fn summary_counts_everything() {
@@ -689,11 +846,17 @@ mod tests {
             dropped: vec![4, 5],
             repairs: 0,
             refused: 0,
+            added: None,
         };
         assert_eq!(
             summary(&outcome),
             "2 polygons, 1 hole, 1 triangle, 2 dropped vertices, 0 repairs"
         );
+        let with_fill = Outcome {
+            added: Some(Vec::new()),
+            ..outcome
+        };
+        assert!(summary(&with_fill).ends_with(", 0 added vertices"));
     }
 
     #[test]
@@ -711,7 +874,7 @@ mod tests {
             vertex_offset: 4,
             ring_offset: 1,
         };
-        let message = describe_error(&refusal, &layout, Precision::F64);
+        let message = describe_error(&refusal, &layout, Precision::F64, false);
         assert!(message.contains("polygon 1, ring 1, vertex 1"), "{message}");
         assert!(message.contains("polygon 1, ring 0, vertex 0"), "{message}");
         let refusal = Refusal {
@@ -719,7 +882,7 @@ mod tests {
             vertex_offset: 4,
             ring_offset: 1,
         };
-        let message = describe_error(&refusal, &layout, Precision::F64);
+        let message = describe_error(&refusal, &layout, Precision::F64, false);
         assert!(
             message.starts_with("polygon 1, ring 1 is a hole"),
             "{message}"
@@ -733,11 +896,47 @@ mod tests {
             vertex_offset: 4,
             ring_offset: 1,
         };
-        let message = describe_error(&refusal, &layout, Precision::F64);
+        let message = describe_error(&refusal, &layout, Precision::F64, false);
         assert!(
             message.starts_with("polygon 1, ring 0 and polygon 1, ring 1 cross each other at polygon 1, ring 1, vertex 2"),
             "{message}"
         );
+    }
+
+    #[test]
+    fn fill_rule_names_are_the_core_s() {
+        let variants = FillRuleArg::value_variants();
+        assert_eq!(variants.len(), FillRule::ALL.len());
+        for arg in variants {
+            let value = arg.to_possible_value().expect("not skipped");
+            assert_eq!(value.get_name(), arg.rule().name());
+        }
+    }
+
+    #[test]
+    fn added_vertices_are_numbered_after_the_file_s_piece_by_piece() {
+        // two bow ties of 4 vertices each, one crossing each: 8 file vertices, so their
+        // crossings are 8 and 9
+        let piece = |start: usize| Piece {
+            triangles: vec![[start as u32, 8, start as u32 + 3]],
+            added: vec![Added {
+                vertex: 0,
+                position: [1.0, 1.0],
+                edges: [start, start + 2],
+            }],
+            ..Piece::default()
+        };
+        let mut results = vec![Ok(piece(0)), Ok(piece(4))];
+        number_added(&mut results, 8).expect("fits");
+        let [Ok(a), Ok(b)] = &results[..] else {
+            panic!("pieces")
+        };
+        assert_eq!(a.triangles, vec![[0, 8, 3]]);
+        assert_eq!(b.triangles, vec![[4, 9, 7]]);
+        assert_eq!((a.added[0].vertex, b.added[0].vertex), (8, 9));
+        assert_eq!(b.added[0].edges, [4, 6]);
+        let outcome = Outcome::gather(&results);
+        assert_eq!(outcome.added.map(|a| a.len()), Some(2));
     }
 
     #[test]
@@ -748,7 +947,7 @@ mod tests {
             vertex_offset: 0,
             ring_offset: 0,
         };
-        let message = describe_error(&refusal, &layout, Precision::F32);
+        let message = describe_error(&refusal, &layout, Precision::F32, false);
         assert_eq!(
             message,
             "ring 0, vertex 1: coordinate out of f32 range (--lenient makes the best of it)"

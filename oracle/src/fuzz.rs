@@ -12,22 +12,24 @@
 use std::fmt;
 
 use arbitrary::Unstructured;
-use polytri::{Nesting as TriNesting, Options, Strategy, Triangulator};
+use polytri::{FillRule, Nesting as TriNesting, Options, Strategy, Triangulator};
 
 use crate::exact::{MAX_COORDINATE, MIN_COORDINATE};
+use crate::gen::crossing::{generate_crossing, CrossingFamily};
 use crate::gen::{generate, Case, Family, Params};
-use crate::{check, check_with, CheckOptions, Input, Nesting};
+use crate::{check, check_fill, check_with, CheckOptions, Input, Nesting};
 
 /// A target body: the fuzzer's bytes to `Ok(())` or what was found.
 pub type Target = fn(&[u8]) -> Result<(), Finding>;
 
 /// The fuzz targets, by name, as `fuzz/Cargo.toml` lists them.
-pub const TARGETS: [(&str, Target); 5] = [
+pub const TARGETS: [(&str, Target); 6] = [
     ("raw_rings", raw_rings),
     ("nested_valid", nested_valid),
     ("precision", precision),
     ("quality_vs_cdt", quality_vs_cdt),
     ("check_never_panics", check_never_panics),
+    ("fill_rules", fill_rules),
 ];
 
 /// Runs the target called `name` on `data`; `None` when there is no such target.
@@ -164,6 +166,7 @@ pub fn decode_case(target: &str, data: &[u8]) -> Option<Case> {
             let (case, _, _) = precision_case(&mut Unstructured::new(data));
             (case.input.clone(), Some(case))
         }
+        "fill_rules" => (fill_case(data).input, None),
         _ => return None,
     };
     let target = TARGETS.iter().find(|(n, _)| *n == target)?.0;
@@ -529,4 +532,202 @@ pub fn check_never_panics(data: &[u8]) -> Result<(), Finding> {
         return Ok(());
     };
     Err(finding(NAME, what, None, &input))
+}
+
+// ---------------------------------------------------------------------------------------
+// fill_rules
+
+/// The largest generated cases `fill_rules` asks for: crossings grow quadratically in the
+/// worst families, and `check_fill` must judge every input well within libFuzzer's timeout.
+const FILL_MAX: usize = 64;
+/// At most this many bytes of `fill_rules`' raw rings are decoded (up to about 60
+/// vertices), for the same reason.
+const FILL_RAW_BYTES: usize = 128;
+
+/// What `fill_rules` triangulates, as the fuzzer's bytes choose it.
+#[derive(Clone, Debug)]
+pub struct FillCase {
+    /// The rings (as generated or decoded; rounded to `f32` only when run).
+    pub input: Input,
+    /// Where the rings come from: a crossing family with its seed and size, or raw bytes.
+    pub origin: String,
+    /// The fill rule.
+    pub rule: FillRule,
+    /// The ear-clipping strategy.
+    pub strategy: Strategy,
+    /// Whether to triangulate in `f32` (else `f64`).
+    pub f32: bool,
+}
+
+impl fmt::Display for FillCase {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{} {:?} {} on {}",
+            self.rule.name(),
+            self.strategy,
+            if self.f32 { "f32" } else { "f64" },
+            self.origin
+        )
+    }
+}
+
+/// Decodes `fill_rules`' bytes: a rule, a strategy and precision, and either a
+/// [`CrossingFamily`] case (seed, size below 64) or raw rings as [`decode_raw`] reads them
+/// (about two in nine inputs).
+pub fn fill_case(data: &[u8]) -> FillCase {
+    let mut u = Unstructured::new(data);
+    let rule = FillRule::ALL[usize::from(u.arbitrary::<u8>().unwrap_or(0)) % FillRule::ALL.len()];
+    let flags = u.arbitrary::<u8>().unwrap_or(0);
+    let strategy = if flags & 1 == 0 {
+        Strategy::Fast
+    } else {
+        Strategy::Quality
+    };
+    let f32 = flags & 2 != 0;
+    let families = CrossingFamily::ALL.len();
+    let source = usize::from(flags >> 2) % (families + 2);
+    let (input, origin) = match CrossingFamily::ALL.get(source) {
+        Some(&family) => {
+            let seed = u.arbitrary::<u64>().unwrap_or(0);
+            let size = usize::from(u.arbitrary::<u16>().unwrap_or(0)) % FILL_MAX;
+            let (vertices, ring_starts) = generate_crossing(family, seed, size);
+            (
+                Input::new(vertices, ring_starts, Nesting::Auto),
+                format!("{family} seed {seed} size {size}"),
+            )
+        }
+        None => {
+            let rest = u.take_rest();
+            let (input, _) = decode_raw(&rest[..rest.len().min(FILL_RAW_BYTES)]);
+            (input, "raw rings".to_owned())
+        }
+    };
+    FillCase {
+        input,
+        origin,
+        rule,
+        strategy,
+        f32,
+    }
+}
+
+/// What a triangulation with a fill rule gave.
+struct FillRun {
+    triangles: Vec<[u32; 3]>,
+    /// The added vertices, widened to `f64`.
+    added: Vec<[f64; 2]>,
+    /// What is wrong with the report: added vertices numbered out of order, naming edges
+    /// that do not exist, or differing from `added_vertices()`.
+    problems: Vec<String>,
+}
+
+/// Triangulates `vertices` with `options` (a fill rule).
+fn fill_triangulate<T: polytri::Coord>(
+    vertices: &[[T; 2]],
+    ring_starts: &[usize],
+    options: &Options,
+    widen: impl Fn(T) -> f64,
+) -> Result<FillRun, polytri::Error> {
+    let mut tri = Triangulator::<T>::new();
+    let mut out = Vec::new();
+    let report = tri.triangulate(vertices, ring_starts, options, &mut out)?;
+    let added: Vec<polytri::Added> = report.added.to_vec();
+    let n = vertices.len();
+    let mut problems = Vec::new();
+    for (k, a) in added.iter().enumerate() {
+        if a.vertex as usize != n + k {
+            problems.push(format!(
+                "added vertex {k} is numbered {}, not {}",
+                a.vertex,
+                n + k
+            ));
+        }
+        if a.edges.iter().any(|&e| e as usize >= n) {
+            problems.push(format!("added vertex {k} names edges {:?} of {n}", a.edges));
+        }
+    }
+    let positions: Vec<[f64; 2]> = added.iter().map(|a| a.position).collect();
+    let typed: Vec<[f64; 2]> = (tri.added_vertices().iter())
+        .map(|&[x, y]| [widen(x), widen(y)])
+        .collect();
+    if typed != positions {
+        problems.push("added_vertices() differs from Report::added".to_owned());
+    }
+    Ok(FillRun {
+        triangles: out,
+        added: positions,
+        problems,
+    })
+}
+
+/// Target `fill_rules`: crossing input (a [`CrossingFamily`] case or raw rings) under one
+/// of the five fill rules, in the strategy and precision the bytes choose.
+///
+/// Must hold: the triangulation passes [`check_fill`] (on the input as triangulated, so in
+/// `f32` on the rounded coordinates), the added vertices are reported consistently, and
+/// the only refusals are of bad numbers (`NonFinite`, `CoordinateRange`) or malformed ring
+/// starts and sizes. Any other error — above all `Error::Internal` — is a finding.
+pub fn fill_rules(data: &[u8]) -> Result<(), Finding> {
+    use polytri::Error;
+    const NAME: &str = "fill_rules";
+    let case = fill_case(data);
+    let options = Options::new()
+        .with_strategy(case.strategy)
+        .with_fill_rule(case.rule);
+    let (judged, result) = if case.f32 {
+        let result = fill_triangulate(
+            &case.input.vertices_f32(),
+            &case.input.ring_starts,
+            &options,
+            f64::from,
+        );
+        (case.input.to_f32(), result)
+    } else {
+        let result = fill_triangulate(
+            &case.input.vertices,
+            &case.input.ring_starts,
+            &options,
+            |x| x,
+        );
+        (case.input.clone(), result)
+    };
+    let what = match result {
+        Err(
+            Error::NonFinite { .. }
+            | Error::CoordinateRange { .. }
+            | Error::FirstRingStart { .. }
+            | Error::RingStartsNotIncreasing { .. }
+            | Error::RingStartOutOfRange { .. }
+            | Error::TooManyVertices { .. },
+        ) => return Ok(()),
+        Err(e) => format!("{case}: refused: {e} ({e:?})"),
+        // no vertices, nothing to cover: the ring starts do not matter (as without a rule)
+        Ok(run) if judged.vertices.is_empty() && run.triangles.is_empty() => return Ok(()),
+        Ok(FillRun {
+            triangles,
+            added,
+            mut problems,
+        }) => {
+            let verdict = check_fill(
+                &judged.vertices,
+                &judged.ring_starts,
+                case.rule,
+                &added,
+                &triangles,
+            );
+            if !verdict.valid {
+                let failures = verdict.failures();
+                if failures.is_empty() {
+                    problems.push("check_fill: invalid".to_owned());
+                }
+                problems.extend(failures);
+            }
+            if problems.is_empty() {
+                return Ok(());
+            }
+            format!("{case}: {}", problems.join("; "))
+        }
+    };
+    Err(finding(NAME, what, None, &judged))
 }

@@ -113,3 +113,47 @@ fn a_dropped_triangle_is_a_finding() {
     out.pop();
     assert!(!check_with(&case.input, &out, &CheckOptions::fast()).valid);
 }
+
+/// `fuzz/regressions/fill_rules` seeds the `fill_rules` target (replayed above with the
+/// rest): one input per crossing family and raw rings, each named by what it decodes to —
+/// family, seed, size, rule, strategy and precision — so a renamed or re-encoded seed shows.
+#[test]
+fn fill_rules_seeds_decode_as_named() {
+    use polytri_oracle::fuzz::fill_case;
+    use polytri_oracle::gen::crossing::CrossingFamily;
+    let dir = fuzz_dir().join("regressions/fill_rules");
+    let mut families = Vec::new();
+    let mut raw = 0;
+    for entry in std::fs::read_dir(&dir)
+        .expect("fuzz/regressions/fill_rules")
+        .flatten()
+    {
+        let name = entry.file_name().to_string_lossy().into_owned();
+        let case = fill_case(&std::fs::read(entry.path()).expect("readable"));
+        let precision = if case.f32 { "f32" } else { "f64" };
+        let tail = format!(
+            "{}_{}_{precision}",
+            case.rule.name(),
+            format!("{:?}", case.strategy).to_lowercase()
+        )
+        .replace('-', "_");
+        if case.origin == "raw rings" {
+            assert!(
+                name.starts_with("raw_") && name.ends_with(&tail),
+                "{name}: {case}"
+            );
+            raw += 1;
+        } else {
+            let expected = format!("{}_{tail}", case.origin.replace(['-', ' '], "_"));
+            assert_eq!(name, expected, "{case}");
+            families.push(case.origin.split(' ').next().unwrap_or("").to_owned());
+        }
+    }
+    for family in CrossingFamily::ALL {
+        assert!(
+            families.iter().any(|f| f == family.name()),
+            "no seed of {family}"
+        );
+    }
+    assert!(raw >= 1, "no raw rings seed");
+}

@@ -24,6 +24,7 @@
 //! ```
 
 mod case;
+pub mod crossing;
 mod geom;
 mod holes;
 mod outlines;

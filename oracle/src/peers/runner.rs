@@ -251,7 +251,12 @@ impl Runner {
                 let input = &prepared.input;
                 let options = polytri::Options::new().with_fill_rule(polytri::FillRule::EvenOdd);
                 (self.polytri)
-                    .triangulate(&input.vertices, &input.ring_starts, &options, &mut self.polytri_out)
+                    .triangulate(
+                        &input.vertices,
+                        &input.ring_starts,
+                        &options,
+                        &mut self.polytri_out,
+                    )
                     .map(|report| report.triangles)
                     .map_err(|e| e.to_string())
             }

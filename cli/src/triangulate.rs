@@ -125,6 +125,8 @@ pub enum StrategyArg {
     Fast,
     /// Clip the ear with the smallest angle first.
     Quality,
+    /// Seidel's trapezoidation: near-linear on every input (the region read even-odd).
+    Seidel,
 }
 
 /// `--precision`: the coordinate type the triangulator works in.
@@ -181,6 +183,7 @@ impl Args {
         let strategy = match self.strategy {
             StrategyArg::Fast => Strategy::Fast,
             StrategyArg::Quality => Strategy::Quality,
+            StrategyArg::Seidel => Strategy::Seidel,
         };
         let nesting = match self.nesting {
             NestingArg::Auto => Nesting::Auto,

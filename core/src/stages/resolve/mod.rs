@@ -503,7 +503,15 @@ mod tests {
         let mut s = Scratch::default();
         let grid = SnapGrid { f32: false };
         for starts in [&[0, 1][..], &[0, 5, 7], &[]] {
-            resolve(&mut s, &[], starts, FillRule::EvenOdd, grid, &mut Vec::new()).unwrap();
+            resolve(
+                &mut s,
+                &[],
+                starts,
+                FillRule::EvenOdd,
+                grid,
+                &mut Vec::new(),
+            )
+            .unwrap();
             assert!(s.rings.is_empty());
         }
     }

@@ -166,23 +166,7 @@ impl<T: Coord> Triangulator<T> {
         self.projected.clear();
         fill(&mut self.projected);
         let made = (self.worker).run(&self.projected, ring_starts, options, out)?;
-        self.added.clear();
-        (self.added).extend(
-            self.worker
-                .cx
-                .added
-                .iter()
-                .map(|a| a.position.map(T::from_f64)),
-        );
-        Ok(Report {
-            triangles: out.len(),
-            polygons: made.polygons,
-            holes: made.holes,
-            deviation: made.deviation,
-            dropped: &self.worker.cx.dropped,
-            repairs: &self.worker.cx.repairs,
-            added: &self.worker.cx.added,
-        })
+        Ok(self.report(made, out.len()))
     }
 
     /// The vertices the last [`Triangulator::triangulate`] call added where edges cross
@@ -229,6 +213,12 @@ impl<T: Coord> Triangulator<T> {
         out: &mut Vec<[u32; 3]>,
     ) -> Result<Report<'_>, Error> {
         let made = self.worker.run(vertices, ring_starts, options, out)?;
+        Ok(self.report(made, out.len()))
+    }
+
+    /// The report of the call that made `made` and `triangles` triangles; keeps its added
+    /// vertices in the coordinate type for [`Triangulator::added_vertices`].
+    fn report(&mut self, made: lenient::Outcome, triangles: usize) -> Report<'_> {
         self.added.clear();
         (self.added).extend(
             self.worker
@@ -237,14 +227,14 @@ impl<T: Coord> Triangulator<T> {
                 .iter()
                 .map(|a| a.position.map(T::from_f64)),
         );
-        Ok(Report {
-            triangles: out.len(),
+        Report {
+            triangles,
             polygons: made.polygons,
             holes: made.holes,
             deviation: made.deviation,
             dropped: &self.worker.cx.dropped,
             repairs: &self.worker.cx.repairs,
             added: &self.worker.cx.added,
-        })
+        }
     }
 }

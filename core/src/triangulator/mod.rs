@@ -44,6 +44,11 @@ impl Worker {
                 cx.keep_collinear = false;
                 cx.reset(false);
                 pipeline::check_input(cx, stages, vertices, ring_starts, options.nesting, false)?;
+                if cx.shared.is_empty() {
+                    return fill::seidel_apart(cx, &mut self.fill, vertices, out);
+                }
+                // rings meeting at a position (possibly along overlapping edges walked
+                // both ways) are resolved into simple rings first, as a fill rule's are
             }
             fill_rule = Some(crate::FillRule::EvenOdd);
         }

@@ -339,9 +339,107 @@ fn random_orthogonal_polygons_with_holes() {
     }
 }
 
-/// Times the stage alone on inputs dumped to text files (`vertex count, ring count`, the
-/// ring starts, then one `x y` per line) in the folder `SEIDEL_TIMING_DIR`, as the
-/// scaling series give them (first ring outer): `SEIDEL_TIMING_DIR=… cargo test --release
+/// Inputs large enough for rounds in ring order after the random one (at least 256 ·
+/// log₂ n segments): a star, a comb, and a square with a lattice of holes, rows of them
+/// touching each other at corners.
+#[test]
+fn large_inputs_insert_rounds_in_ring_order() {
+    let spikes = 3000;
+    let star: Vec<[f64; 2]> = (0..2 * spikes)
+        .map(|k| {
+            let angle = std::f64::consts::PI * k as f64 / spikes as f64;
+            let r = if k % 2 == 0 {
+                1000.0
+            } else {
+                10.0 + (k % 13) as f64
+            };
+            [r * angle.cos(), r * angle.sin()]
+        })
+        .collect();
+    check_with(&[star], 2 * spikes - 2, 5, 1e-12);
+
+    let teeth = 2000;
+    let mut comb = vec![[0.0, 0.0], [(2 * teeth) as f64, 0.0]];
+    for k in (0..teeth).rev() {
+        let x = (2 * k) as f64;
+        comb.extend([[x + 2.0, 50.0], [x + 1.0, 50.0], [x + 1.0, 1.0], [x, 1.0]]);
+    }
+    let n = comb.len();
+    check_with(&[comb], n - 2, 6, 0.0);
+
+    // holes: diamonds around odd lattice points, every other row touching the next one
+    let k: usize = 40;
+    let side = (2 * k) as f64;
+    let mut rings = vec![square(-1.0, -1.0, side + 2.0)];
+    let mut expected = 4 - 2;
+    for i in 0..k {
+        for j in 0..k {
+            let (cx, cy) = ((2 * i + 1) as f64, (2 * j + 1) as f64);
+            let r = if j % 2 == 0 { 1.0 } else { 0.5 };
+            rings.push(vec![[cx, cy - r], [cx - r, cy], [cx, cy + r], [cx + r, cy]]);
+        }
+    }
+    // the diamonds of radius 1 in a row touch each other; counted by pieces, the region is
+    // one piece whose boundary walk visits every hole vertex once and every touching
+    // point twice: (4 + 4 k²) vertex occurrences, plus 2 per hole not touching any other
+    // (the half-size ones), each row of touching diamonds one more hole's worth
+    let rows = k.div_ceil(2);
+    let small = k * (k / 2);
+    expected += 4 * k * k + 2 * small + 2 * rows;
+    check_with(&rings, expected, 7, 0.0);
+}
+
+/// An input as the stage takes it: distinct points, ring starts, rings of indices.
+type StageInput = (Vec<[f64; 2]>, Vec<usize>, Vec<u32>);
+
+/// Reads one input of a timing file (see [`timing`]) from `lines`, if any is left: distinct
+/// points, the first ring counter-clockwise and the others clockwise.
+fn read_input<'a>(lines: &mut impl Iterator<Item = &'a str>) -> Option<(StageInput, usize)> {
+    let head: Vec<usize> = lines
+        .next()?
+        .split(' ')
+        .map(|x| x.parse().expect("a count"))
+        .collect();
+    let starts: Vec<usize> = (0..head[1])
+        .map(|_| lines.next().expect("a start").parse().expect("a start"))
+        .collect();
+    let vertices: Vec<[f64; 2]> = (0..head[0])
+        .map(|_| {
+            let line = lines.next().expect("a vertex");
+            let mut it = line
+                .split(' ')
+                .map(|x| x.parse::<f64>().expect("a coordinate"));
+            [it.next().expect("x"), it.next().expect("y")]
+        })
+        .collect();
+    let mut order: Vec<usize> = (0..vertices.len()).collect();
+    order.sort_by(|&a, &b| vertices[a].partial_cmp(&vertices[b]).expect("finite"));
+    let mut points: Vec<[f64; 2]> = Vec::new();
+    let mut index = vec![0u32; vertices.len()];
+    for &k in &order {
+        if points.last() != Some(&vertices[k]) {
+            points.push(vertices[k]);
+        }
+        index[k] = (points.len() - 1) as u32;
+    }
+    let mut ids = Vec::new();
+    for (r, &start) in starts.iter().enumerate() {
+        let end = starts.get(r + 1).copied().unwrap_or(vertices.len());
+        let mut ring: Vec<u32> = index[start..end].to_vec();
+        let ccw = double_area(&points, &ring) > 0.0;
+        if ccw != (r == 0) {
+            ring.reverse();
+        }
+        ids.extend(ring);
+    }
+    Some(((points, starts, ids), vertices.len()))
+}
+
+/// Times the stage alone on inputs dumped to text files in the folder
+/// `SEIDEL_TIMING_DIR`: per input a line `vertex-count ring-count`, one line per ring
+/// start, one `x y` line per vertex, the first ring outer and the others its holes (as the
+/// scaling series and, one input per shape, glyph pages give them); a file may hold
+/// several inputs, timed together as one run. `SEIDEL_TIMING_DIR=… cargo test --release
 /// -p polytri --lib seidel::tests::timing -- --ignored --nocapture`.
 #[test]
 #[ignore = "a measurement, run by hand on dumped inputs"]
@@ -349,6 +447,10 @@ fn timing() {
     let Ok(dir) = std::env::var("SEIDEL_TIMING_DIR") else {
         return;
     };
+    let min_runs: usize = std::env::var("SEIDEL_TIMING_RUNS")
+        .ok()
+        .and_then(|r| r.parse().ok())
+        .unwrap_or(3);
     let mut files: Vec<_> = std::fs::read_dir(&dir)
         .expect("a folder")
         .map(|e| e.expect("an entry").path())
@@ -357,74 +459,33 @@ fn timing() {
     for path in files {
         let text = std::fs::read_to_string(&path).expect("a file");
         let mut lines = text.lines();
-        let head: Vec<usize> = lines
-            .next()
-            .expect("a header")
-            .split(' ')
-            .map(|x| x.parse().expect("a count"))
-            .collect();
-        let starts: Vec<usize> = (0..head[1])
-            .map(|_| lines.next().expect("a start").parse().expect("a start"))
-            .collect();
-        let vertices: Vec<[f64; 2]> = lines
-            .map(|l| {
-                let mut it = l
-                    .split(' ')
-                    .map(|x| x.parse::<f64>().expect("a coordinate"));
-                [it.next().expect("x"), it.next().expect("y")]
-            })
-            .collect();
-        // distinct points, rings oriented (the first counter-clockwise, the others not)
-        let mut order: Vec<usize> = (0..vertices.len()).collect();
-        order.sort_by(|&a, &b| vertices[a].partial_cmp(&vertices[b]).expect("finite"));
-        let mut points: Vec<[f64; 2]> = Vec::new();
-        let mut index = vec![0u32; vertices.len()];
-        for &k in &order {
-            if points.last() != Some(&vertices[k]) {
-                points.push(vertices[k]);
-            }
-            index[k] = (points.len() - 1) as u32;
-        }
-        let mut ids = Vec::new();
-        for (r, &start) in starts.iter().enumerate() {
-            let end = starts.get(r + 1).copied().unwrap_or(vertices.len());
-            let mut ring: Vec<u32> = index[start..end].to_vec();
-            let ccw = double_area(&points, &ring) > 0.0;
-            if ccw != (r == 0) {
-                ring.reverse();
-            }
-            ids.extend(ring);
+        let mut inputs = Vec::new();
+        let mut vertices = 0;
+        while let Some((input, n)) = read_input(&mut lines) {
+            inputs.push(input);
+            vertices += n;
         }
         let mut s = Scratch::default();
         let mut out = Vec::new();
-        let mut best = f64::INFINITY;
-        let mut total = 0.0;
-        let mut runs = 0;
-        let min_runs: usize = std::env::var("SEIDEL_TIMING_RUNS")
-            .ok()
-            .and_then(|r| r.parse().ok())
-            .unwrap_or(3);
+        let (mut best, mut total, mut runs) = (f64::INFINITY, 0.0, 0);
+        let mut triangles = 0;
         while runs < min_runs || (total < 2.0 && runs < 30) {
             let began = std::time::Instant::now();
-            triangulate(&mut s, &points, &starts, &ids, 0x005e_1de1_2024, &mut out).expect("ok");
+            triangles = 0;
+            for (points, starts, ids) in &inputs {
+                triangulate(&mut s, points, starts, ids, 0x005e_1de1_2024, &mut out).expect("ok");
+                triangles += out.len();
+            }
             let t = began.elapsed().as_secs_f64();
             best = best.min(t);
             total += t;
             runs += 1;
         }
-        let flat = out
-            .iter()
-            .filter(|t| {
-                orient2d(pt(&points, t[0]), pt(&points, t[1]), pt(&points, t[2]))
-                    != Orientation::CounterClockwise
-            })
-            .count();
-        assert_eq!(flat, 0);
         println!(
             "{:28} {:>9} vertices {:>9} triangles  best {:9.2} ms",
             path.file_name().and_then(|n| n.to_str()).unwrap_or("?"),
-            vertices.len(),
-            out.len(),
+            vertices,
+            triangles,
             best * 1e3
         );
     }

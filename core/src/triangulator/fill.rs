@@ -14,8 +14,11 @@ pub(crate) struct Scratch {
     vertices: Vec<[f64; 2]>,
     resolve: resolve::Scratch,
     seidel: seidel::Scratch,
-    /// Checked input for Seidel: the rings.
+    /// Checked input for Seidel: each pool node's position's first vertex (for nodes at
+    /// shared positions), the rings, and the edges between shared positions.
+    canon: Vec<u32>,
     ids: Vec<u32>,
+    pairs: Vec<(u32, u32)>,
     starts: Vec<usize>,
 }
 
@@ -98,33 +101,68 @@ pub(crate) fn triangulate<T: Coord>(
 }
 
 /// `Strategy::Seidel` without a fill rule, on input strict mode has checked (`load`,
-/// `clean`, `nest`) and found apart (`cx.shared` empty: no two nodes at one position, no
-/// vertex on an edge): the rings are simple and disjoint, so they go straight to the stage,
-/// with the region on their left as `nest` turned them (outer boundaries
-/// counter-clockwise, holes clockwise). Nothing crosses: nothing to resolve, no vertex
-/// added.
-pub(crate) fn seidel_apart<T: Coord>(
-    cx: &Context,
-    fs: &mut Scratch,
-    vertices: &[[T; 2]],
-    out: &mut Vec<[u32; 3]>,
-) -> Result<Outcome, Error> {
-    fs.vertices.clear();
-    fs.vertices
-        .extend(vertices.iter().map(|v| [v[0].to_f64(), v[1].to_f64()]));
+/// `clean`, `nest`): takes the checked rings for the stage (`fs.ids`, `fs.starts`), with
+/// the region on their left as `nest` turned them (outer boundaries counter-clockwise,
+/// holes clockwise); returns the numbers of outer rings and holes. Nodes at one position
+/// (`cx.shared`: rings touching, a vertex on an edge split there) name it by one vertex,
+/// as the stage wants distinct positions; any number of edges may meet there. `None`
+/// where two edges run between the same two positions (a collinear stretch walked both
+/// ways): the stage takes no overlapping edges, so the caller resolves those rings as a
+/// fill rule's.
+pub(crate) fn checked_rings(cx: &Context, fs: &mut Scratch) -> Option<(usize, usize)> {
+    let pool = &cx.pool;
+    fs.canon.clear();
+    fs.canon.resize(pool.len(), NO_VERTEX);
+    let mut i = 0;
+    while i < cx.shared.len() {
+        let end = cx.same_position_end(i);
+        let first = pool.get(cx.shared[i]).vertex;
+        for &n in &cx.shared[i..end] {
+            fs.canon[n.idx()] = first;
+        }
+        i = end;
+    }
     fs.ids.clear();
     fs.starts.clear();
+    fs.pairs.clear();
     let (mut polygons, mut holes) = (0, 0);
     for ring in cx.rings.iter().filter(|r| r.alive) {
         fs.starts.push(fs.ids.len());
-        let ids = cx.pool.ring(ring.start).map(|n| cx.pool.get(n).vertex);
-        fs.ids.extend(ids);
+        let mut prev = fs.canon[pool.prev(ring.start).idx()];
+        for n in pool.ring(ring.start) {
+            let c = fs.canon[n.idx()];
+            fs.ids.push(if c == NO_VERTEX {
+                pool.get(n).vertex
+            } else {
+                c
+            });
+            // only an edge between two shared positions can lie on another
+            if c != NO_VERTEX && prev != NO_VERTEX {
+                fs.pairs.push((c.min(prev), c.max(prev)));
+            }
+            prev = c;
+        }
         if ring.depth % 2 == 1 {
             holes += 1;
         } else {
             polygons += 1;
         }
     }
+    fs.pairs.sort_unstable();
+    let overlap = fs.pairs.windows(2).any(|w| w[0] == w[1]);
+    (!overlap).then_some((polygons, holes))
+}
+
+/// Triangulates the rings [`checked_rings`] took, counted as it returned them.
+pub(crate) fn seidel_checked<T: Coord>(
+    fs: &mut Scratch,
+    vertices: &[[T; 2]],
+    (polygons, holes): (usize, usize),
+    out: &mut Vec<[u32; 3]>,
+) -> Result<Outcome, Error> {
+    fs.vertices.clear();
+    fs.vertices
+        .extend(vertices.iter().map(|v| [v[0].to_f64(), v[1].to_f64()]));
     seidel::triangulate(
         &mut fs.seidel,
         &fs.vertices,
@@ -139,6 +177,9 @@ pub(crate) fn seidel_apart<T: Coord>(
         deviation: 0.0,
     })
 }
+
+/// No vertex: a node at a position no other node holds.
+const NO_VERTEX: u32 = u32::MAX;
 
 /// Outer rings (counter-clockwise) and holes (clockwise) among simple rings: the turn at
 /// each ring's lowest-leftmost vertex, which is convex.

@@ -44,11 +44,16 @@ impl Worker {
                 cx.keep_collinear = false;
                 cx.reset(false);
                 pipeline::check_input(cx, stages, vertices, ring_starts, options.nesting, false)?;
-                if cx.shared.is_empty() {
-                    return fill::seidel_apart(cx, &mut self.fill, vertices, out);
+                if let Some(counts) = fill::checked_rings(cx, &mut self.fill) {
+                    // rings winding twice round a region are refused, as the ear
+                    // clippers do (only rings touching something can)
+                    if !cx.shared.is_empty() {
+                        pipeline::join(cx, stages)?;
+                    }
+                    return fill::seidel_checked(&mut self.fill, vertices, counts, out);
                 }
-                // rings meeting at a position (possibly along overlapping edges walked
-                // both ways) are resolved into simple rings first, as a fill rule's are
+                // overlapping edges (a collinear stretch walked both ways) are resolved
+                // into simple rings first, as a fill rule's are
             }
             fill_rule = Some(crate::FillRule::EvenOdd);
         }

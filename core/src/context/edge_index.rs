@@ -49,6 +49,7 @@ impl EdgeIndex {
                 self.grid.insert(n, pool.p(n), pool.p(pool.next(n)));
             }
         }
+        self.grid.seal();
         self.current = true;
     }
 

@@ -313,7 +313,8 @@ fn nearest_hit(cx: &Context, pm: Point) -> Option<(NodeId, NodeId)> {
     let grid = &cx.edge_index.grid();
     let mut best = None;
     let row = grid.row(pm.y);
-    for a in grid.long().iter().copied().chain(grid.row_list(row)) {
+    let east = Point::new(f64::INFINITY, pm.y);
+    for a in grid.long(pm, east).chain(grid.row_list(row)) {
         consider_hit(cx, pm, a, &mut best);
     }
     for column in grid.column(pm.x)..grid.columns() {

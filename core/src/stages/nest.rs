@@ -600,7 +600,8 @@ fn depth_from_nearest(cx: &Context, s: &Scratch, b: usize, pv: Point) -> Option<
     let grid = &cx.edge_index.grid();
     let mut near = Nearest::default();
     let row = grid.row(pv.y);
-    for n in grid.long().iter().copied().chain(grid.row_list(row)) {
+    let east = Point::new(f64::INFINITY, pv.y);
+    for n in grid.long(pv, east).chain(grid.row_list(row)) {
         near.visit(cx, b, pv, n);
     }
     for column in grid.column(pv.x)..grid.columns() {
@@ -817,7 +818,15 @@ fn winding_number(
             k => touching[k as usize] += step,
         }
     };
-    for &n in grid.long() {
+    // (the long edges whose boxes meet the ray)
+    let (inf, ninf) = (f64::INFINITY, f64::NEG_INFINITY);
+    let (lo, hi) = match ray {
+        Ray::East => (pv, Point::new(inf, pv.y)),
+        Ray::West => (Point::new(ninf, pv.y), pv),
+        Ray::North => (pv, Point::new(pv.x, inf)),
+        Ray::South => (Point::new(pv.x, ninf), pv),
+    };
+    for n in grid.long(lo, hi) {
         count(n, None);
     }
     // the lists along the walk's own row (column) hold an edge once; cells and the lists

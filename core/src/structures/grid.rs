@@ -9,6 +9,7 @@
 //!   that an ear test looks only at the vertices near its triangle; for a long thin
 //!   triangle, only in the cells along it.
 
+use super::boxes::{BoxIter, BoxTree};
 use crate::geom::Point;
 use crate::structures::NodeId;
 
@@ -67,7 +68,7 @@ pub(crate) struct EdgeGrid {
     head: Vec<u32>,
     /// Listed edge and the next entry of the same list.
     entries: Vec<(NodeId, u32)>,
-    long: Vec<NodeId>,
+    long: BoxTree,
     /// Entries the along lists may still take.
     along_budget: usize,
 }
@@ -125,9 +126,7 @@ impl EdgeGrid {
         for (n, _) in &mut self.entries {
             *n = rename(*n);
         }
-        for n in &mut self.long {
-            *n = rename(*n);
-        }
+        self.long.rename(rename);
     }
 
     /// Lists the edge starting at `n`, running from `a` to `b`.
@@ -166,7 +165,7 @@ impl EdgeGrid {
                 self.push(cells + self.ny + c, n);
             }
         } else if !self.insert_along(n, a, b, (r0, r1), (c0, c1)) {
-            self.long.push(n);
+            self.long.push(n, a, b);
         }
     }
 
@@ -268,9 +267,17 @@ impl EdgeGrid {
         self.list(self.nx * self.ny + self.ny + self.nx + row * self.nx + column)
     }
 
-    /// The edges long both ways; every query must look at them too.
-    pub fn long(&self) -> &[NodeId] {
-        &self.long
+    /// Builds the tree of the `long` edges: call it once every edge is listed (edges
+    /// listed later are found too, by a linear scan).
+    pub fn seal(&mut self) {
+        self.long.seal();
+    }
+
+    /// The edges long both ways (beyond the along lists' budget) whose bounding boxes
+    /// meet the box `lo..=hi` (which may be unbounded: a ray); every query must look at
+    /// them too.
+    pub fn long(&self, lo: Point, hi: Point) -> BoxIter<'_> {
+        self.long.query(lo, hi)
     }
 
     /// Every listed edge whose bounding box may meet the box `lo..=hi` (and possibly
@@ -291,7 +298,7 @@ impl EdgeGrid {
             r1,
             c0,
             c1,
-            long: self.long.iter(),
+            long: self.long.query(lo, hi),
         }
     }
 }
@@ -320,7 +327,7 @@ pub(crate) struct Query<'a> {
     r1: usize,
     c0: usize,
     c1: usize,
-    long: core::slice::Iter<'a, NodeId>,
+    long: BoxIter<'a>,
 }
 
 impl Iterator for Query<'_> {
@@ -381,7 +388,7 @@ impl Iterator for Query<'_> {
                     }
                     list
                 }
-                Stage::Long => return self.long.next().copied(),
+                Stage::Long => return self.long.next(),
             };
             self.at = grid.head.get(list).copied().unwrap_or(END);
         }
@@ -787,7 +794,11 @@ mod tests {
             }
             for (k, &(a, b)) in segments.iter().enumerate() {
                 let n = NodeId(k as u32);
-                if edges.long().contains(&n) {
+                let everywhere = (
+                    p(f64::NEG_INFINITY, f64::NEG_INFINITY),
+                    p(f64::INFINITY, f64::INFINITY),
+                );
+                if edges.long(everywhere.0, everywhere.1).any(|m| m == n) {
                     continue;
                 }
                 // the ends exactly, and points along the segment (rounded: within a few
@@ -818,7 +829,11 @@ mod tests {
         }
         // each listed at most `MAX_CELLS` times
         assert!(edges.entries.len() <= 2000 * MAX_CELLS);
-        assert!(edges.long().is_empty());
+        let everywhere = (
+            p(f64::NEG_INFINITY, f64::NEG_INFINITY),
+            p(f64::INFINITY, f64::INFINITY),
+        );
+        assert_eq!(edges.long(everywhere.0, everywhere.1).count(), 0);
         let at = |x: f64, y: f64| edges.query(p(x, y), p(x, y)).collect::<Vec<_>>();
         assert!(at(50.0, 50.0).contains(&NodeId(500)));
         assert!(at(50.0, 50.0).contains(&NodeId(1500)));

@@ -3,6 +3,7 @@
 //! the set of ear tips known to fail. They store positions and links; every geometric
 //! decision about them is made in [`crate::geom`].
 
+mod boxes;
 mod grid;
 mod pool;
 mod tips;

@@ -20,6 +20,9 @@ pub enum DropReason {
     NonFinite,
     /// Its ring was skipped (lenient mode), see [`RepairKind`].
     RingSkipped,
+    /// With a fill rule: no corner of the rule's region — inside or outside it, or on a
+    /// straight stretch of its boundary.
+    OffBoundary,
 }
 
 /// An input vertex that no triangle uses, and why.

@@ -5,6 +5,7 @@ use super::lenient::{self, Outcome, Reruns};
 use super::pipeline::Stages;
 use crate::context::Context;
 use crate::geom::{orient2d, Coord, Orientation, Point, SnapGrid};
+use crate::report::{DropReason, Dropped};
 use crate::stages::{load, resolve, seidel};
 use crate::{Error, FillRule, Nesting, Options, Strategy};
 
@@ -14,6 +15,8 @@ pub(crate) struct Scratch {
     vertices: Vec<[f64; 2]>,
     resolve: resolve::Scratch,
     seidel: seidel::Scratch,
+    /// Which output vertices the triangles use.
+    used: Vec<bool>,
     /// Checked input for Seidel: each pool node's position's first vertex (for nodes at
     /// shared positions), the rings, and the edges between shared positions.
     canon: Vec<u32>,
@@ -72,7 +75,7 @@ pub(crate) fn triangulate<T: Coord>(
                 *v = r.hot_out[*v as usize];
             }
         }
-        cx.dropped.clear();
+        report_unused(&mut cx.dropped, &mut fs.used, r, ring_starts, out);
         let (polygons, holes) = count_rings(&r.hot, starts, ids);
         return Ok(Outcome {
             polygons,
@@ -95,9 +98,49 @@ pub(crate) fn triangulate<T: Coord>(
             *v = r.map[*v as usize];
         }
     }
-    // the vertices left out are the resolved rings', not the input's
-    cx.dropped.clear();
+    // the vertices the pipeline left out are the resolved rings', not the input's
+    report_unused(&mut cx.dropped, &mut fs.used, r, ring_starts, out);
     Ok(made)
+}
+
+/// The input vertices no triangle uses, and why, into `dropped`: another vertex at the
+/// same position stands for it ([`DropReason::Coincident`]), or it is no corner of the
+/// rule's region ([`DropReason::OffBoundary`]).
+fn report_unused(
+    dropped: &mut Vec<Dropped>,
+    used: &mut Vec<bool>,
+    r: &resolve::Scratch,
+    ring_starts: &[usize],
+    out: &[[u32; 3]],
+) {
+    dropped.clear();
+    let n = r.vertex_hot.len();
+    used.clear();
+    used.resize(n, false);
+    for &v in out.iter().flatten() {
+        if let Some(u) = used.get_mut(v as usize) {
+            *u = true;
+        }
+    }
+    let mut ring = 0;
+    for (i, &hot) in r.vertex_hot.iter().enumerate() {
+        while ring + 1 < ring_starts.len() && ring_starts[ring + 1] <= i {
+            ring += 1;
+        }
+        if used[i] {
+            continue;
+        }
+        let stands_for = r.hot_out.get(hot as usize).map(|&o| o as usize);
+        let reason = match stands_for {
+            Some(o) if o != i && used.get(o) == Some(&true) => DropReason::Coincident,
+            _ => DropReason::OffBoundary,
+        };
+        dropped.push(Dropped {
+            vertex: i as u32,
+            ring: ring as u32,
+            reason,
+        });
+    }
 }
 
 /// `Strategy::Seidel` without a fill rule, on input strict mode has checked (`load`,

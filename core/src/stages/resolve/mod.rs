@@ -60,7 +60,7 @@ pub(crate) struct Scratch {
     /// The output vertex index of each hot point.
     pub hot_out: Vec<u32>,
     /// Each input vertex's hot point.
-    vertex_hot: Vec<u32>,
+    pub vertex_hot: Vec<u32>,
     edges: Vec<Edge>,
     order: Vec<u32>,
     cells: Cells,

@@ -1,6 +1,7 @@
 //! `Strategy::Seidel` end to end, judged by the oracle: every generator family over
 //! several seeds and sizes, every earcut fixture the oracle finds valid (in every
-//! rotation), the scaling series at 10⁴ vertices, in `f64` and `f32` — and, with fill
+//! rotation), every valid case of the corpus's own folders, the scaling series at 10⁴
+//! vertices, in `f64` and `f32` — and, with fill
 //! rules, every crossing family, judged by `check_fill`. Plus determinism: the same input
 //! twice gives the same triangles.
 
@@ -11,7 +12,7 @@ use std::time::Duration;
 use common::{assert_no_failures, earcut_fixtures, guarded_triangulate, seen, SELF_INTERSECTING};
 use polytri::{Coord, FillRule, Nesting, Options, Strategy, Triangulator};
 use polytri_oracle::gen::crossing::{generate_crossing, CrossingFamily};
-use polytri_oracle::replay::{rotate, Precision, ROTATIONS};
+use polytri_oracle::replay::{load_dir, rotate, Precision, ROTATIONS};
 use polytri_oracle::series::Series;
 use polytri_oracle::{check_fill, check_with, generate, CheckOptions, Family, Input, Params};
 
@@ -174,6 +175,38 @@ fn the_scaling_series_at_ten_thousand() {
             }
         }
     }
+    assert_no_failures(&failures);
+}
+
+/// Every valid case of the corpus's own folders (named cases, the paper's figures, the
+/// paper's datasets), in every rotation and both precisions, with the case's nesting.
+#[test]
+fn corpus_cases() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../corpus");
+    let (mut failures, mut judged) = (Vec::new(), 0);
+    for folder in ["cases", "paper", "datasets"] {
+        let cases = load_dir(&root.join(folder)).unwrap_or_else(|e| panic!("{folder}: {e}"));
+        for case in cases {
+            if case.expect.input_valid == Some(false)
+                || !check_with(&case.input, &[], &CheckOptions::fast()).input_valid
+            {
+                continue;
+            }
+            for rotation in ROTATIONS {
+                let rotated = rotate(&case.input, rotation);
+                for precision in [Precision::F64, Precision::F32] {
+                    judged += 1;
+                    if let Some(what) = judge(&rotated, precision) {
+                        failures.push(format!(
+                            "{folder}/{} rot {rotation} {precision}: {what}",
+                            case.name
+                        ));
+                    }
+                }
+            }
+        }
+    }
+    assert!(judged >= 200, "only {judged} runs");
     assert_no_failures(&failures);
 }
 

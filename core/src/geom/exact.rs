@@ -242,6 +242,50 @@ impl SnapGrid {
         if a == q || b == q {
             return true;
         }
+        self.meets_pixel_quickly(a, b, q)
+            .unwrap_or_else(|| self.meets_pixel_exactly(a, b, q))
+    }
+
+    /// [`SnapGrid::meets_pixel`] in floating point, where that decides: `Some` only with a
+    /// margin of several times the rounding errors. The segment's line misses the box
+    /// round the pixel (half-widths its larger halves): `false`. The line passes through
+    /// the open box inside it (the smaller halves), and that box lies within the segment's
+    /// extent along its longer axis, so the line's points there are the segment's: `true`.
+    /// (A line meets a box centred at q with half-widths hx, hy exactly when
+    /// |(b − a) × (q − a)| ≤ |dy|·hx + |dx|·hy.) Most calls end here: a crossing's pixel
+    /// is met well inside by the edges through it, others are far from the line.
+    fn meets_pixel_quickly(self, a: [f64; 2], b: [f64; 2], q: [f64; 2]) -> Option<bool> {
+        const E: f64 = 8.0 * f64::EPSILON;
+        let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+        let (qx, qy) = (q[0] - a[0], q[1] - a[1]);
+        let det = (dx * qy - dy * qx).abs();
+        let err = E * ((dx * qy).abs() + (dy * qx).abs());
+        // the pixel's halves below and above q, axis by axis (differences of neighbouring
+        // grid values, halved: exact)
+        let halves = |x: f64| ((x - self.down(x)) / 2.0, (self.up(x) - x) / 2.0);
+        let ((lx, ux), (ly, uy)) = (halves(q[0]), halves(q[1]));
+        let outer = dy.abs() * lx.max(ux) + dx.abs() * ly.max(uy);
+        if det > outer * (1.0 + E) + err {
+            return Some(false);
+        }
+        let (ix, iy) = (lx.min(ux), ly.min(uy));
+        let inner = dy.abs() * ix + dx.abs() * iy;
+        if det + err >= inner * (1.0 - E) {
+            return None;
+        }
+        // the inner box's extent along the longer axis, within the segment's
+        let (k, half) = if dx.abs() >= dy.abs() {
+            (0, ix)
+        } else {
+            (1, iy)
+        };
+        let margin = E * (q[k].abs() + half);
+        let within = q[k] - half - margin > a[k].min(b[k]) && q[k] + half + margin < a[k].max(b[k]);
+        within.then_some(true)
+    }
+
+    /// [`SnapGrid::meets_pixel`] in exact arithmetic.
+    fn meets_pixel_exactly(self, a: [f64; 2], b: [f64; 2], q: [f64; 2]) -> bool {
         // the segment's parameters t in [0, 1] inside the pixel, axis by axis: the lower
         // and upper bounds as ratios (numerator, denominator, closed)
         let zero = (Exp::default(), Exp::sum(&[1.0]), true);
@@ -391,5 +435,49 @@ mod tests {
         assert!(g.meets_pixel([1.0 - e / 2.0, 1.0], [1.0, 1.0 - e / 2.0], q));
         // a diagonal through the inside
         assert!(g.meets_pixel([1.0 - e / 2.0, 1.0 + e], [1.0 + e, 1.0 - e / 2.0], q));
+    }
+
+    #[test]
+    fn the_float_filter_agrees_with_the_exact_test() {
+        // segments between grid points and grid points near them (a few pixels off the
+        // line, or on it), at magnitudes from 2^-40 to 2^40, on both grids
+        let mut x: u64 = 0x2545_f491_4f6c_dd1d;
+        let mut rand = move || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            (x >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let (mut decided, mut total) = (0, 0);
+        for f32 in [false, true] {
+            let g = SnapGrid { f32 };
+            let snap = |v: f64| if f32 { f64::from(v as f32) } else { v };
+            for _ in 0..20_000 {
+                let scale = 2f64.powi((rand() * 80.0) as i32 - 40);
+                let a = [snap(rand() * scale), snap(rand() * scale)];
+                let b = [snap(rand() * scale), snap(rand() * scale)];
+                if a == b {
+                    continue;
+                }
+                let t = rand() * 1.2 - 0.1;
+                let mut q = [
+                    snap(a[0] + t * (b[0] - a[0])),
+                    snap(a[1] + t * (b[1] - a[1])),
+                ];
+                // a few steps off in each axis
+                for c in &mut q {
+                    for _ in 0..(rand() * 4.0) as usize {
+                        *c = if rand() < 0.5 { g.up(*c) } else { g.down(*c) };
+                    }
+                }
+                total += 1;
+                if let Some(quick) = g.meets_pixel_quickly(a, b, q) {
+                    decided += 1;
+                    assert_eq!(quick, g.meets_pixel_exactly(a, b, q), "{a:?} {b:?} {q:?}");
+                }
+            }
+        }
+        // the filter is of use: it decides most of these
+        assert!(decided * 2 > total, "{decided} of {total}");
     }
 }

@@ -19,9 +19,10 @@ use std::time::{Duration, Instant};
 
 use polytri_oracle::peers::{Implementation, Peer, Prepared, Runner};
 use polytri_oracle::series::Series;
-use polytri_oracle::{Input, Nesting, Role};
+use polytri_oracle::{Grouping, Input};
 use serde::Serialize;
 
+use crate::polygon_args::PolygonArgs;
 use crate::{input, say, Failure};
 
 /// earcut's benchmark fixtures, under `corpus/earcut/fixtures/`.
@@ -58,14 +59,38 @@ water-huge2, water3) and the paper datasets of corpus/datasets/ (only the datase
 
 Columns: per implementation the median time of one run in milliseconds and, in \
 parentheses, its ratio to the fastest peer on that input (polytri columns too: below 1 \
-means polytri is faster than every peer). polytri-fast is strict: it refuses crossing edges \
+means polytri is faster than every peer). Peers: earcut, earcutr, i-triangle, lyon, spade. \
+Two references, no peers (never the fastest peer): earcut-exact is earcut 0.4.12 with \
+exact predicates — its code vendored, the signed area of three points and the \
+point-in-triangle test decided by the exact sign of orient2d, everything else unchanged — \
+and earcut-vendored the same vendored code with earcut's own floating-point predicates. \
+earcut-exact over earcut-vendored is the price of exactness in earcut's code; \
+earcut-vendored over earcut what the copy itself costs (in part its safe node access). \
+polytri-fast is strict: it refuses crossing edges \
 (rings touching at vertices are fine). polytri-lenient repairs them instead of refusing; it still sweeps the edges \
 to find them, and runs extra passes on input that has some. polytri-check is strict mode's \
 input check alone (loading, the edge sweep, nesting), no triangulation: compare it with \
 polytri-fast for the check's share. polytri-threads is polytri-fast with the polygons of a \
-file spread over every core (triangulate_many; one polygon runs on one thread). The last \
+file spread over every core (triangulate_many; one polygon runs on one thread). On \
+request (--polytri): even-odd and seidel-even-odd read all of a file's rings at once by \
+the even-odd fill rule (crossing edges split at exactly rounded points), with the fast \
+ear clipper or Seidel's trapezoidation, as lyon and i-triangle read them; seidel is \
+Seidel's trapezoidation in strict mode. The last \
 row is the geometric mean of the ratios. Files with several polygons go to earcut and \
 polytri one polygon at a time, to the others all at once.
+
+--nesting and --merge read FILES and the datasets as `polytri triangulate` reads a file. \
+auto (the default): containment decides which rings of each polygon are holes, decided \
+once before timing with the oracle's exact grouping, so that every implementation gets the \
+same polygons, each outer ring followed by its holes (a file whose polygons list their \
+outer ring first is timed exactly as with first-outer). first-outer: each polygon's first \
+ring is outer, the rest its holes. --merge: all rings of a file as one input; with auto \
+polytri decides the nesting itself, within the timing, and earcut gets the rings grouped \
+by containment; with first-outer the file's first ring is outer, every other a hole. \
+earcut's fixtures, without FILES, keep earcut's convention (first ring outer, the rest \
+holes), as `polytri replay` reads earcut's suite: in water-huge and water-huge2 \
+containment would find rings inside holes and outside the outer ring, and make polygons \
+of them; name their files as FILES for that.
 
 --per-second: triangles per second instead (in millions; the input's triangle count, as \
 polytri-fast makes it, over each implementation's median time, so rates compare like \
@@ -81,16 +106,22 @@ pub struct Args {
     #[arg(value_name = "FILES", conflicts_with_all = ["paper", "scaling"])]
     pub files: Vec<PathBuf>,
 
-    /// Peers to compare with, comma-separated [default: all]
+    /// Peers to compare with, comma-separated, and the references earcut-exact and
+    /// earcut-vendored [default: all]
     #[arg(long, value_delimiter = ',', value_name = "PEERS",
           value_parser = parse_peer)]
     pub peers: Option<Vec<Peer>>,
 
-    /// polytri configurations, comma-separated: fast, lenient, quality, check, threads
-    /// [default: all; --scaling: all but threads]
+    /// polytri configurations, comma-separated: fast, lenient, quality, check, threads,
+    /// even-odd, seidel, seidel-even-odd [default: the first five; --scaling: the first
+    /// four]
     #[arg(long, value_delimiter = ',', value_name = "CONFIGS",
           value_parser = parse_polytri)]
     pub polytri: Option<Vec<Implementation>>,
+
+    /// --nesting and --merge: how each file's rings make polygons (not for --scaling)
+    #[command(flatten)]
+    pub polygons: PolygonArgs,
 
     /// Time budget per input, shared by all implementations
     #[arg(long, value_name = "S", default_value_t = 1.0)]
@@ -161,7 +192,7 @@ fn parse_polytri(s: &str) -> Result<Implementation, String> {
         .into_iter()
         .find(|imp| imp.name().eq_ignore_ascii_case(&full))
         .ok_or_else(|| {
-            format!("unknown polytri configuration '{s}' (known: fast, lenient, quality, check, threads, even-odd, seidel)")
+            format!("unknown polytri configuration '{s}' (known: fast, lenient, quality, check, threads, even-odd, seidel, seidel-even-odd)")
         })
 }
 
@@ -231,7 +262,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     if args.scaling {
         return scaling::run(args, &implementations, budget, min_samples, style);
     }
-    let inputs = load_inputs(&args.files, args.paper)?;
+    let inputs = load_inputs(&args.files, args.paper, args.polygons.grouping())?;
     let mut rows = Vec::with_capacity(inputs.len());
     for (k, (name, input)) in inputs.iter().enumerate() {
         say(format_args!(
@@ -272,7 +303,8 @@ fn implementations(args: &Args) -> Vec<Implementation> {
             .filter(|&imp| !(args.scaling && imp == Implementation::PolytriThreads))
             .collect()
     });
-    let peers = args.peers.clone().unwrap_or_else(|| Peer::ALL.to_vec());
+    let peers = (args.peers.clone())
+        .unwrap_or_else(|| Peer::ALL.into_iter().chain(Peer::REFERENCES).collect());
     let mut chosen: Vec<Implementation> = Vec::new();
     for imp in polytri
         .into_iter()
@@ -301,9 +333,14 @@ fn print_json(value: &impl Serialize) -> Result<(), Failure> {
 }
 
 /// The inputs by name: the files given, or else the default fixtures (unless `paper`) and
-/// datasets.
-fn load_inputs(files: &[PathBuf], paper: bool) -> Result<Vec<(String, Input)>, Failure> {
-    let paths: Vec<PathBuf> = if files.is_empty() {
+/// datasets, each file's rings made polygons as `grouping` says — but earcut's fixtures by
+/// earcut's convention, each a polygon whose first ring is outer ([`EARCUT_CONVENTION`]).
+fn load_inputs(
+    files: &[PathBuf],
+    paper: bool,
+    grouping: Grouping,
+) -> Result<Vec<(String, Input)>, Failure> {
+    let paths: Vec<(PathBuf, Grouping)> = if files.is_empty() {
         let corpus = find_corpus().ok_or_else(|| {
             Failure(
                 "no FILES given and no corpus/ directory found from here upwards; \
@@ -312,26 +349,37 @@ fn load_inputs(files: &[PathBuf], paper: bool) -> Result<Vec<(String, Input)>, F
             )
         })?;
         let fixtures: &[&str] = if paper { &[] } else { &FIXTURES };
-        fixtures
-            .iter()
-            .map(|f| corpus.join("earcut/fixtures").join(format!("{f}.json")))
-            .chain(
-                DATASETS
-                    .iter()
-                    .map(|d| corpus.join("datasets").join(format!("{d}.json"))),
-            )
-            .collect()
+        let fixtures = (fixtures.iter()).map(|f| {
+            let path = corpus.join("earcut/fixtures").join(format!("{f}.json"));
+            (path, EARCUT_CONVENTION)
+        });
+        let datasets = (DATASETS.iter())
+            .map(|d| (corpus.join("datasets").join(format!("{d}.json")), grouping));
+        fixtures.chain(datasets).collect()
     } else {
-        files.to_vec()
+        files.iter().map(|f| (f.clone(), grouping)).collect()
     };
     paths
         .iter()
-        .map(|path| {
+        .map(|(path, grouping)| {
             let read = input::read(path)?;
-            Ok((short_name(path), to_oracle_input(&read.polygons)))
+            Ok((
+                short_name(path),
+                Input::from_polygons(&read.polygons, *grouping),
+            ))
         })
         .collect()
 }
+
+/// How the default inputs read earcut's fixtures, whatever `--nesting` says: as earcut's
+/// suite defines them (and `polytri replay` reads them), the first ring outer, every other
+/// a hole. Containment would read two of them otherwise: water-huge and water-huge2 (whose
+/// edges cross) have rings inside holes and outside the outer ring, which `--nesting auto`
+/// makes polygons of their own (44 and 85 polygons instead of 1).
+const EARCUT_CONVENTION: Grouping = Grouping {
+    nesting: polytri::Nesting::FirstIsOuter,
+    merge: false,
+};
 
 /// The corpus directory: `corpus/` in the current directory or one above it, else the
 /// repository polytri was built from.
@@ -354,21 +402,6 @@ fn short_name(path: &Path) -> String {
         .file_name()
         .map_or(name.clone(), |f| f.to_string_lossy().into_owned());
     base.strip_suffix(".json").unwrap_or(&base).to_owned()
-}
-
-/// One polygon: first ring outer, the rest holes; several: each one's first ring outer.
-fn to_oracle_input(polygons: &[input::Polygon]) -> Input {
-    let rings: Vec<Vec<[f64; 2]>> = polygons.iter().flatten().cloned().collect();
-    if polygons.len() == 1 {
-        return Input::from_rings(&rings, Nesting::FirstIsOuter);
-    }
-    let roles = polygons
-        .iter()
-        .flat_map(|polygon| {
-            (0..polygon.len()).map(|k| if k == 0 { Role::Outer } else { Role::Hole })
-        })
-        .collect();
-    Input::from_rings(&rings, Nesting::Roles(roles))
 }
 
 /// One implementation's state while an input is measured.
@@ -459,7 +492,7 @@ fn row(name: &str, prepared: &Prepared, contestants: Vec<Contestant>) -> Row {
     let best_peer = contestants
         .iter()
         .zip(&medians)
-        .filter(|(c, _)| !c.implementation.is_polytri())
+        .filter(|(c, _)| c.implementation.is_peer())
         .filter_map(|(_, m)| *m)
         .min_by(f64::total_cmp);
     let triangles = contestants
@@ -590,11 +623,11 @@ fn cell(timing: &Timing, triangles: Option<usize>, per_second: bool) -> String {
     }
 }
 
-/// The name of the fastest peer on a row (ratio 1).
+/// The name of the fastest peer on a row (ratio 1; references are no peers).
 fn fastest_peer(row: &Row) -> Option<&str> {
     row.timings
         .iter()
-        .filter(|t| !t.implementation.starts_with("polytri"))
+        .filter(|t| (t.implementation.parse()).is_ok_and(Implementation::is_peer))
         .filter_map(|t| t.ratio.map(|r| (r, t.implementation.as_str())))
         .min_by(|a, b| a.0.total_cmp(&b.0))
         .map(|(_, name)| name)
@@ -662,6 +695,20 @@ fn render(lines: &[Vec<String>], style: Style) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use polytri_oracle::peers::polygons;
+
+    #[test]
+    fn auto_nesting_gives_the_default_inputs_first_outer_polygons() {
+        // the datasets list each polygon's outer ring first, and earcut's fixtures keep
+        // earcut's convention: the default run times the same polygons either way
+        let auto = load_inputs(&[], false, Grouping::default()).expect("the corpus");
+        let given = load_inputs(&[], false, EARCUT_CONVENTION).expect("the corpus");
+        assert_eq!(auto.len(), FIXTURES.len() + DATASETS.len());
+        for ((name, auto), (_, given)) in auto.iter().zip(&given) {
+            assert_eq!(auto.vertices, given.vertices, "{name}");
+            assert_eq!(polygons(auto), polygons(given), "{name}");
+        }
+    }
 
     #[test]
     fn median_and_geometric_mean() {
@@ -696,10 +743,12 @@ mod tests {
                 contestant(Implementation::PolytriFast, vec![1.0]),
                 contestant(Implementation::Peer(Peer::Earcut), vec![2.0]),
                 contestant(Implementation::Peer(Peer::Lyon), vec![4.0]),
+                // faster than every peer, but a reference: no peer
+                contestant(Implementation::Peer(Peer::EarcutVendored), vec![0.5]),
             ],
         );
         let ratios: Vec<_> = row.timings.iter().map(|t| t.ratio).collect();
-        assert_eq!(ratios, vec![Some(0.5), Some(1.0), Some(2.0)]);
+        assert_eq!(ratios, vec![Some(0.5), Some(1.0), Some(2.0), Some(0.25)]);
         assert_eq!(fastest_peer(&row), Some("earcut"));
     }
 

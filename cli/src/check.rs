@@ -4,12 +4,15 @@
 use std::io::{self, Write};
 use std::path::PathBuf;
 
-use clap::ValueEnum;
-use polytri_oracle::{check_with, CheckOptions, Input as OracleInput, Nesting, Role, Verdict};
+use polytri_oracle::{
+    check_fill, check_with, CheckOptions, Input as OracleInput, Nesting, Role, Verdict,
+};
 use serde::Deserialize;
 
 use crate::input;
 use crate::layout::Layout;
+use crate::polygon_args::{NestingArg, PolygonArgs};
+use crate::triangulate::FillRuleArg;
 use crate::Failure;
 
 /// Arguments of `polytri check`.
@@ -25,7 +28,16 @@ output: every check with a detail naming the first offending triangle or edge, i
 numbers (with several polygons: \"polygon P: …\"), the expected \
 triangle count, earcut's deviation, quality metrics and spade's constrained Delaunay \
 triangulation for comparison. Exit status: 0 when valid, 1 when not (the failed checks \
-are named on standard error) or when a file cannot be read, 2 on bad usage.")]
+are named on standard error) or when a file cannot be read, 2 on bad usage.
+
+With --fill-rule RULE, RESULT is judged as `polytri triangulate --fill-rule RULE` makes \
+it: its vertices are INPUT's points, then the vertices added where edges cross (its \
+\"added\" list says which polygon's edges each splits), and the triangles must cover \
+RULE's region of each polygon (--merge: of all rings) exactly, up to the rounding of the \
+added points, without overlapping (the oracle's check_fill: every triangle inside by the \
+exact winding number, their area against the region's by an exact slab decomposition). \
+Where a polygon added vertices, its failures are in its own numbers: its points, then \
+its added vertices.")]
 pub struct Args {
     /// The polygons (`-` reads standard input)
     #[arg(value_name = "INPUT")]
@@ -35,30 +47,18 @@ pub struct Args {
     #[arg(value_name = "RESULT")]
     pub result: PathBuf,
 
-    /// Which rings of a polygon are holes: by containment (auto: any order and winding),
-    /// or its first ring is the outer boundary and the others its holes (first-outer) — as
-    /// `polytri triangulate` reads them
-    #[arg(long, value_enum, default_value_t = NestingArg::Auto)]
-    pub nesting: NestingArg,
-
-    /// Judge all rings of the file together, as one set of rings, instead of each polygon
-    /// on its own (as `polytri triangulate --merge` triangulates them)
-    #[arg(long)]
-    pub merge: bool,
+    /// --nesting and --merge, as `polytri triangulate` reads the file
+    #[command(flatten)]
+    pub polygons: PolygonArgs,
 
     /// Only the exact checks and metrics: skip geo's tests and spade's triangulation
     #[arg(long)]
     pub fast: bool,
-}
 
-/// `--nesting`, as `polytri triangulate` takes it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum NestingArg {
-    /// Containment depth decides: even outer, odd hole.
-    Auto,
-    /// Each polygon's first ring is outer, the rest are its holes.
-    #[value(alias = "polygons")]
-    FirstOuter,
+    /// Judge the region of this fill rule, as `polytri triangulate --fill-rule` makes it
+    /// (RESULT's vertices: INPUT's points, then the added ones)
+    #[arg(long, value_enum, value_name = "RULE")]
+    pub fill_rule: Option<FillRuleArg>,
 }
 
 /// Result JSON as read: non-finite vertices were written as `null`.
@@ -66,6 +66,16 @@ pub enum NestingArg {
 struct ResultJson {
     vertices: Vec<[Option<f64>; 2]>,
     triangles: Vec<[u32; 3]>,
+    /// With a fill rule: the added vertices and the (file) edges each splits.
+    #[serde(default)]
+    added: Vec<AddedJson>,
+}
+
+/// One entry of RESULT's `"added"` list.
+#[derive(Debug, Deserialize)]
+struct AddedJson {
+    vertex: usize,
+    edges: [usize; 2],
 }
 
 /// Runs `polytri check`.
@@ -78,20 +88,20 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     let input = input::read(&args.input)?;
     let layout = Layout::new(&input.polygons);
     let result = read_result(&args.result)?;
+    if let Some(rule) = args.fill_rule {
+        return run_fill(args, &layout, &result, rule);
+    }
     compare_vertices(args, &layout.vertices, &result.vertices)?;
     let options = if args.fast {
         CheckOptions::fast()
     } else {
         CheckOptions::full()
     };
-    let verdict = if args.merge {
-        check_with(
-            &to_oracle(&layout, args.nesting),
-            &result.triangles,
-            &options,
-        )
+    let nesting = args.polygons.nesting;
+    let verdict = if args.polygons.merge {
+        check_with(&to_oracle(&layout, nesting), &result.triangles, &options)
     } else {
-        check_each_polygon(&layout, args.nesting, &result.triangles, &options)
+        check_each_polygon(&layout, nesting, &result.triangles, &options)
     };
     print_verdict(&verdict)?;
     if verdict.valid {
@@ -104,6 +114,151 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             verdict.failures().join("; ")
         )))
     }
+}
+
+/// `polytri check --fill-rule`: each polygon's (or with --merge all rings') region by the
+/// rule, judged by the oracle's `check_fill`.
+fn run_fill(
+    args: &Args,
+    layout: &Layout,
+    result: &ResultJson,
+    rule: FillRuleArg,
+) -> Result<(), Failure> {
+    let n = layout.vertices.len();
+    let (file, points) = result.vertices.split_at(n.min(result.vertices.len()));
+    compare_vertices(args, &layout.vertices, file)?;
+    let name = input::display_name(&args.result);
+    let added: Vec<[f64; 2]> = (points.iter().enumerate())
+        .map(|(k, p)| match p {
+            [Some(x), Some(y)] if x.is_finite() && y.is_finite() => Ok([*x, *y]),
+            _ => Err(Failure(format!(
+                "{name}: added vertex {} is not a finite point",
+                n + k
+            ))),
+        })
+        .collect::<Result<_, _>>()?;
+    let rule = rule.rule();
+    let verdict = if args.polygons.merge {
+        check_fill(
+            &layout.vertices,
+            &layout.ring_starts,
+            rule,
+            &added,
+            &result.triangles,
+        )
+    } else {
+        check_fill_per_polygon(layout, result, &added, rule)
+            .map_err(|e| Failure(format!("{name}: {e}")))?
+    };
+    print_verdict(&verdict)?;
+    if verdict.valid {
+        Ok(())
+    } else {
+        Err(Failure(format!(
+            "{name}: not a valid triangulation of the {} region of {}: {}",
+            rule.name(),
+            input::display_name(&args.input),
+            verdict.failures().join("; ")
+        )))
+    }
+}
+
+/// `check_fill` on each polygon with its triangles: those whose corners are its points and
+/// the points added on its edges (RESULT's `"added"` list says whose), in the polygon's
+/// own numbers (its points, then its added ones).
+fn check_fill_per_polygon(
+    layout: &Layout,
+    result: &ResultJson,
+    added: &[[f64; 2]],
+    rule: polytri::FillRule,
+) -> Result<Verdict, String> {
+    let n = layout.vertices.len();
+    let polygons = layout.polygon_rings.len();
+    // each added vertex's polygon (that of the first edge it splits) and local number
+    let mut owner = vec![None; added.len()];
+    let mut own_added: Vec<Vec<[f64; 2]>> = vec![Vec::new(); polygons];
+    for entry in &result.added {
+        let k = (entry.vertex.checked_sub(n))
+            .filter(|&k| k < added.len())
+            .ok_or_else(|| format!("\"added\" names vertex {}, not an added one", entry.vertex))?;
+        let p = (layout.locate(entry.edges[0]))
+            .ok_or_else(|| {
+                format!(
+                    "added vertex {} splits edge {}, which is no edge of the input",
+                    entry.vertex, entry.edges[0]
+                )
+            })?
+            .polygon;
+        let span = layout.polygon_vertices(p);
+        owner[k] = Some((p, span.len() + own_added[p].len()));
+        own_added[p].push(added[k]);
+    }
+    if let Some(k) = owner.iter().position(Option::is_none) {
+        return Err(format!(
+            "vertex {} follows the input's points but is not in the \"added\" list (say whose edges it splits, or use --merge)",
+            n + k
+        ));
+    }
+    let local = |v: u32| -> Option<(usize, u32)> {
+        let v = v as usize;
+        if v < n {
+            let at = layout.locate(v)?;
+            Some((
+                at.polygon,
+                (v - layout.polygon_vertices(at.polygon).start) as u32,
+            ))
+        } else {
+            owner
+                .get(v - n)
+                .copied()
+                .flatten()
+                .map(|(p, i)| (p, i as u32))
+        }
+    };
+    let mut by_polygon: Vec<Vec<[u32; 3]>> = vec![Vec::new(); polygons];
+    let mut numbers: Vec<Vec<usize>> = vec![Vec::new(); polygons];
+    let mut joining = Vec::new();
+    for (k, t) in result.triangles.iter().enumerate() {
+        match t.map(local) {
+            [Some((a, x)), Some((b, y)), Some((c, z))] if a == b && b == c => {
+                by_polygon[a].push([x, y, z]);
+                numbers[a].push(k);
+            }
+            _ => joining.push(k),
+        }
+    }
+    let mut verdicts = Vec::new();
+    for p in 0..polygons {
+        let rings = layout.polygon_rings[p].clone();
+        if rings.is_empty() {
+            continue;
+        }
+        let span = layout.polygon_vertices(p);
+        let starts = layout.ring_starts_from(rings.clone(), span.start);
+        let mut verdict = check_fill(
+            &layout.vertices[span.clone()],
+            &starts,
+            rule,
+            &own_added[p],
+            &by_polygon[p],
+        );
+        if own_added[p].is_empty() {
+            for check in &mut verdict.checks {
+                if let Some(detail) = &mut check.detail {
+                    *detail = file_numbers(detail, &numbers[p], span.start, rings.start);
+                }
+            }
+        }
+        verdicts.push((p, verdict));
+    }
+    let mut verdict = sum_verdicts(&verdicts, polygons > 1);
+    flag_joining(
+        &mut verdict,
+        &joining,
+        &result.triangles,
+        "different polygons or no vertex",
+    );
+    Ok(verdict)
 }
 
 fn read_result(path: &std::path::Path) -> Result<ResultJson, Failure> {
@@ -198,23 +353,30 @@ fn check_each_polygon(
         verdicts.push((p, verdict));
     }
     let mut verdict = sum_verdicts(&verdicts, layout.polygon_rings.len() > 1);
-    if let Some(&k) = joining.first() {
-        verdict.valid = false;
-        verdict.triangles += joining.len();
-        verdict.checks.insert(
-            0,
-            polytri_oracle::Check {
-                name: "indices".to_owned(),
-                passed: false,
-                detail: Some(format!(
-                    "triangle {k} {:?} joins vertices of different polygons (and {} more)",
-                    triangles[k],
-                    joining.len() - 1
-                )),
-            },
-        );
-    }
+    flag_joining(&mut verdict, &joining, triangles, "different polygons");
     verdict
+}
+
+/// Fails `verdict` for the triangles `joining` (their numbers in `triangles`), whose
+/// corners are of `what`, naming the first.
+fn flag_joining(verdict: &mut Verdict, joining: &[usize], triangles: &[[u32; 3]], what: &str) {
+    let Some(&k) = joining.first() else {
+        return;
+    };
+    verdict.valid = false;
+    verdict.triangles += joining.len();
+    verdict.checks.insert(
+        0,
+        polytri_oracle::Check {
+            name: "indices".to_owned(),
+            passed: false,
+            detail: Some(format!(
+                "triangle {k} {:?} joins vertices of {what} (and {} more)",
+                triangles[k],
+                joining.len() - 1
+            )),
+        },
+    );
 }
 
 /// `detail`, about one polygon judged on its own, with its numbers made the file's: a

@@ -12,9 +12,11 @@ use clap::{Parser, Subcommand};
 mod bench;
 mod campaign;
 mod check;
+mod generate;
 mod input;
 mod layout;
 mod output;
+mod polygon_args;
 mod precision;
 mod promote;
 mod replay;
@@ -49,6 +51,9 @@ enum Command {
     Replay(replay::Args),
     /// Turn a campaign case or a fuzz input into a corpus regression case.
     Promote(promote::Args),
+    /// Write one input of the harness's generators (valid families, crossing families,
+    /// scaling series) as a rings JSON file.
+    Generate(generate::Args),
 }
 
 /// A failure the user should hear about: printed as one line on stderr, exit status 1.
@@ -93,6 +98,7 @@ fn main() -> ExitCode {
         Command::Campaign(args) => campaign::run(&args),
         Command::Replay(args) => replay::run(&args),
         Command::Promote(args) => promote::run(&args),
+        Command::Generate(args) => generate::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -4,8 +4,10 @@
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 
-use polytri_oracle::replay::{load_dir, replay_all, CorpusCase, Row};
+use polytri_oracle::replay::{load_dir_grouped, replay_all, CorpusCase, Row};
+use polytri_oracle::Grouping;
 
+use crate::polygon_args::PolygonArgs;
 use crate::{say, Failure};
 
 /// Arguments of `polytri replay`.
@@ -16,6 +18,11 @@ case files — corpus case JSON (as `polytri campaign` and `polytri promote` wri
 JSON or shapes JSON. A DIR holding only folders (like corpus/) replays each of them but \
 snapshots/.
 
+--nesting and --merge say how the rings of a rings JSON or shapes JSON file make polygons \
+(by default containment decides within each polygon). They do not apply to corpus case \
+JSON, which carries its own nesting, nor to earcut's suite, whose counts and deviation \
+bounds are for earcut's convention (first ring outer).
+
 Every case runs in both strategies, f64 and f32, rotated by 0, 90, 180 and 270 degrees: \
 strict mode for valid inputs (the triangulation must be valid, with the case's \
 expect.triangles), strict and lenient for invalid ones (strict must refuse, lenient must \
@@ -25,6 +32,11 @@ pub struct Args {
     /// Corpus folders to replay [default: corpus]
     #[arg(value_name = "DIR")]
     pub dirs: Vec<PathBuf>,
+
+    /// --nesting and --merge: how the rings of rings JSON and shapes JSON files make
+    /// polygons (not of corpus case JSON, which carries its own nesting)
+    #[command(flatten)]
+    pub polygons: PolygonArgs,
 
     /// Print only the rows that failed
     #[arg(long)]
@@ -45,7 +57,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     };
     let mut cases = Vec::new();
     for dir in &dirs {
-        cases.extend(load(dir)?);
+        cases.extend(load(dir, args.polygons.grouping())?);
     }
     if cases.is_empty() {
         return Err(Failure(format!(
@@ -83,9 +95,9 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     }
 }
 
-/// The cases of `dir`; a folder of folders (like `corpus/`) gives those of each subfolder
-/// but `snapshots`.
-fn load(dir: &Path) -> Result<Vec<CorpusCase>, Failure> {
+/// The cases of `dir`, rings and shapes JSON read as `grouping` says; a folder of folders
+/// (like `corpus/`) gives those of each subfolder but `snapshots`.
+fn load(dir: &Path, grouping: Grouping) -> Result<Vec<CorpusCase>, Failure> {
     let entries: Vec<PathBuf> = std::fs::read_dir(dir)
         .map_err(|e| Failure(format!("{}: {e}", dir.display())))?
         .filter_map(Result::ok)
@@ -96,7 +108,7 @@ fn load(dir: &Path) -> Result<Vec<CorpusCase>, Failure> {
             .iter()
             .any(|p| p.is_file() && p.extension().is_some_and(|x| x == "json"));
     if has_cases {
-        return load_dir(dir).map_err(Failure);
+        return load_dir_grouped(dir, grouping).map_err(Failure);
     }
     let mut subdirs: Vec<&PathBuf> = entries
         .iter()
@@ -105,7 +117,7 @@ fn load(dir: &Path) -> Result<Vec<CorpusCase>, Failure> {
     subdirs.sort();
     let mut cases = Vec::new();
     for sub in subdirs {
-        cases.extend(load_dir(sub).map_err(Failure)?);
+        cases.extend(load_dir_grouped(sub, grouping).map_err(Failure)?);
     }
     Ok(cases)
 }

@@ -7,10 +7,11 @@ use std::ops::Range;
 use std::path::{Path, PathBuf};
 
 use clap::ValueEnum;
-use polytri::{Coord, Error, FillRule, Nesting, Options, Strategy, Triangulator};
+use polytri::{Coord, Error, FillRule, Options, Strategy, Triangulator};
 
 use crate::input::{self, Input};
 use crate::layout::Layout;
+use crate::polygon_args::PolygonArgs;
 use crate::{output, say, Failure};
 
 /// Arguments of `polytri triangulate`.
@@ -60,11 +61,9 @@ pub struct Args {
     #[arg(long, value_enum, default_value_t = Precision::F64)]
     pub precision: Precision,
 
-    /// Which rings of a polygon are holes: by containment (auto: any order and winding),
-    /// or its first ring is the outer boundary and the others its holes (first-outer,
-    /// earcut's convention)
-    #[arg(long, value_enum, default_value_t = NestingArg::Auto)]
-    pub nesting: NestingArg,
+    /// --nesting and --merge
+    #[command(flatten)]
+    pub polygons: PolygonArgs,
 
     /// Repair what can be repaired (crossing edges, misplaced holes, NaN points) instead of
     /// refusing the input; the summary counts the repairs
@@ -77,11 +76,6 @@ pub struct Args {
     /// vertices after the file's. --nesting does not apply
     #[arg(long, value_enum, value_name = "RULE", conflicts_with = "lenient")]
     pub fill_rule: Option<FillRuleArg>,
-
-    /// Triangulate all rings of the file together, as one set of rings (glyph outlines
-    /// that come as one soup across the file), instead of each polygon on its own
-    #[arg(long)]
-    pub merge: bool,
 
     /// Strict mode: triangulate every polygon that can be, report each one that cannot,
     /// write the rest, and exit with status 1 if any failed
@@ -169,15 +163,6 @@ impl FillRuleArg {
     }
 }
 
-/// `--nesting`, mirroring [`polytri::Nesting`].
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum NestingArg {
-    /// Containment decides which rings are holes.
-    Auto,
-    /// Each polygon's first ring is outer, the rest are its holes.
-    FirstOuter,
-}
-
 impl Args {
     fn options(&self) -> Options {
         let strategy = match self.strategy {
@@ -185,13 +170,9 @@ impl Args {
             StrategyArg::Quality => Strategy::Quality,
             StrategyArg::Seidel => Strategy::Seidel,
         };
-        let nesting = match self.nesting {
-            NestingArg::Auto => Nesting::Auto,
-            NestingArg::FirstOuter => Nesting::FirstIsOuter,
-        };
         let options = Options::new()
             .with_strategy(strategy)
-            .with_nesting(nesting)
+            .with_nesting(self.polygons.nesting.nesting())
             .with_lenient(self.lenient)
             .with_threads(self.threads);
         match self.fill_rule {
@@ -252,7 +233,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
 
     let options = args.options();
     let z = flat_z(&input, &layout);
-    if z.is_some() && args.merge {
+    if z.is_some() && args.polygons.merge {
         return Err(Failure(format!(
             "{name}: --merge takes rings in the plane; these have z (each polygon is triangulated in its own plane)"
         )));
@@ -262,7 +243,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             "{name}: --fill-rule takes rings in the plane; these have z (added crossing points would have none)"
         )));
     }
-    let pieces = pieces(&layout, args.merge);
+    let pieces = pieces(&layout, args.polygons.merge);
     let mut results = match (args.precision, &z) {
         (Precision::F64, Some(z)) => {
             triangulate_pieces_3d(&layout.vertices, z, &layout, &pieces, &options)
@@ -697,7 +678,7 @@ fn write_result(
                 )
             }
             OutputFormat::Geojson => {
-                let features = features(input, layout, pieces, results, args.merge);
+                let features = features(input, layout, pieces, results, args.polygons.merge);
                 output::write_geojson(w, &all_vertices, z, &features, args.per_triangle)
             }
         }

@@ -66,6 +66,8 @@ fn table_has_every_column_and_a_geometric_mean() {
         "i-triangle ms",
         "lyon ms",
         "spade ms",
+        "earcut-exact ms",
+        "earcut-vendored ms",
         "fastest peer",
     ] {
         assert!(
@@ -76,13 +78,14 @@ fn table_has_every_column_and_a_geometric_mean() {
     let row: Vec<&str> = lines[1].split_whitespace().collect();
     assert_eq!(row[..3], ["building", "1", "15"]);
     assert!(row[3].parse::<usize>().is_ok_and(|t| t > 10), "{row:?}");
-    // every implementation: a time and a ratio, none failed; then the fastest peer's name
-    assert_eq!(row.len(), 4 + 2 * 10 + 1, "{row:?}");
+    // every implementation: a time and a ratio, none failed; then the fastest peer's name,
+    // never one of the references
+    assert_eq!(row.len(), 4 + 2 * 12 + 1, "{row:?}");
     assert!(
         ["earcut", "earcutr", "i-triangle", "lyon", "spade"].contains(&row[row.len() - 1]),
         "{row:?}"
     );
-    assert_eq!(lines[2].matches('×').count(), 10, "{}", lines[2]);
+    assert_eq!(lines[2].matches('×').count(), 12, "{}", lines[2]);
 }
 
 #[test]
@@ -232,7 +235,7 @@ fn quick_scaling_prints_medians_and_exponents_and_plots_each_series() {
     for line in exponents.lines().filter(|l| l.starts_with("c")) {
         let cells: Vec<&str> = line.split_whitespace().collect();
         // every implementation ran at three sizes: an exponent each
-        assert_eq!(cells.len(), 1 + 9, "{line}");
+        assert_eq!(cells.len(), 1 + 11, "{line}");
         for cell in &cells[1..] {
             let k: f64 = cell
                 .parse()
@@ -271,4 +274,91 @@ fn files_and_scaling_exclude_each_other() {
         .output()
         .expect("run polytri bench");
     assert_eq!(out.status.code(), Some(2));
+}
+
+/// A shapes JSON of two polygons, a 4×4 square, then a 10×10 square around it.
+const SQUARE_THEN_SQUARE_AROUND_IT: &str =
+    "[[[[3,3],[7,3],[7,7],[3,7]]], [[[0,0],[10,0],[10,10],[0,10]]]]";
+
+/// `polytri bench --quick --json --polytri fast --peers earcut ARGS FILE`: polytri-fast's
+/// timing and the row's polygon and triangle counts.
+fn fast_on(file: &Path, extra: &[&str]) -> (Value, u64, Option<u64>) {
+    let mut args = vec!["--json", "--polytri", "fast", "--peers", "earcut"];
+    args.extend_from_slice(extra);
+    args.push(file.to_str().expect("UTF-8 path"));
+    let (text, _) = run(&args);
+    let json: Value = serde_json::from_str(&text).expect("JSON on stdout");
+    let row = &json["rows"][0];
+    let timing = row["timings"][0].clone();
+    assert_eq!(timing["implementation"], "polytri-fast", "{row}");
+    (
+        timing,
+        row["polygons"].as_u64().expect("a polygon count"),
+        row["triangles"].as_u64(),
+    )
+}
+
+#[test]
+fn nesting_and_merge_say_how_rings_make_polygons() {
+    let dir = scratch("nesting");
+    let file = dir.join("two_squares.json");
+    fs::write(&file, SQUARE_THEN_SQUARE_AROUND_IT).expect("write input");
+    // each polygon on its own, whatever the nesting: two squares, two triangles each
+    for nesting in ["auto", "first-outer"] {
+        let (timing, polygons, triangles) = fast_on(&file, &["--nesting", nesting]);
+        assert_eq!((polygons, triangles), (2, Some(4)), "{nesting}: {timing}");
+        assert!(timing["median_ms"].is_number(), "{nesting}: {timing}");
+    }
+    // merged, containment decides: the small square is a hole in the big one
+    let (timing, polygons, triangles) = fast_on(&file, &["--merge"]);
+    assert_eq!((polygons, triangles), (1, Some(8)), "{timing}");
+    assert_eq!(timing["triangles"], 8, "{timing}");
+    // merged, the first ring outer: the big square would be a hole outside it, which
+    // strict polytri refuses
+    let (timing, polygons, _) = fast_on(&file, &["--merge", "--nesting", "first-outer"]);
+    assert_eq!(polygons, 1, "{timing}");
+    assert!(timing["median_ms"].is_null(), "{timing}");
+    assert!(timing["error"].is_string(), "{timing}");
+}
+
+#[test]
+fn auto_nesting_finds_the_outer_ring_of_a_polygon_listed_second() {
+    let dir = scratch("hole-first");
+    let file = dir.join("hole_first.json");
+    fs::write(
+        &file,
+        "[[[3,3],[7,3],[7,7],[3,7]], [[0,0],[10,0],[10,10],[0,10]]]",
+    )
+    .expect("write input");
+    let (timing, polygons, triangles) = fast_on(&file, &[]);
+    assert_eq!((polygons, triangles), (1, Some(8)), "{timing}");
+    let (timing, _, _) = fast_on(&file, &["--nesting", "first-outer"]);
+    assert!(timing["error"].is_string(), "{timing}");
+}
+
+#[test]
+fn references_are_timed_but_no_ratio_is_to_them() {
+    let text = bench(&[
+        "--json",
+        "--polytri",
+        "fast",
+        "--peers",
+        "earcut-exact,earcut-vendored,spade",
+    ]);
+    let json: Value = serde_json::from_str(&text).expect("JSON on stdout");
+    let timings = &json["rows"][0]["timings"];
+    let names: Vec<&str> = (0..4)
+        .filter_map(|k| timings[k]["implementation"].as_str())
+        .collect();
+    assert_eq!(
+        names,
+        ["polytri-fast", "earcut-exact", "earcut-vendored", "spade"]
+    );
+    // both references make earcut's count for building (expected.json: 13; polytri drops a
+    // collinear vertex and makes 12)
+    for k in 1..3 {
+        assert_eq!(timings[k]["triangles"], 13, "{timings}");
+    }
+    // spade, the only peer, is the fastest peer however fast the references are
+    assert_eq!(timings[3]["ratio"].as_f64(), Some(1.0), "{timings}");
 }

@@ -274,3 +274,50 @@ fn usage_help_and_conflicts() {
     assert!(!stderr.contains("--lenient"), "{stderr}");
     let _ = fs::remove_dir_all(dir);
 }
+
+/// `polytri check --fill-rule` judges what `triangulate --fill-rule` wrote, per polygon and
+/// merged, and rejects it under the other rule or with a triangle taken away.
+#[test]
+fn check_judges_fill_rule_results() {
+    let dir = scratch("check");
+    let shapes = format!("[{PENTAGRAM}, [[[500, 0], [502, 2], [502, 0], [500, 2]]]]");
+    let file = write(&dir, "shapes.json", &shapes);
+    let path = |p: &Path| p.to_str().expect("utf-8 path").to_owned();
+    for merge in [false, true] {
+        let mut extra = vec!["--fill-rule", "nonzero"];
+        if merge {
+            extra.push("--merge");
+        }
+        let (text, _) = triangulate(&file, &extra);
+        let result = write(&dir, "result.json", &text);
+        let check = |rule: &str, result: &Path| {
+            let mut args = vec!["check".to_owned(), path(&file), path(result)];
+            args.extend(["--fast", "--fill-rule", rule].map(str::to_owned));
+            if merge {
+                args.push("--merge".to_owned());
+            }
+            let args: Vec<&str> = args.iter().map(String::as_str).collect();
+            polytri(&args)
+        };
+        let ok = check("nonzero", &result);
+        let stderr = String::from_utf8_lossy(&ok.stderr);
+        assert!(ok.status.success(), "merge {merge}: {stderr}");
+        let verdict: Value = serde_json::from_slice(&ok.stdout).expect("verdict JSON");
+        assert_eq!(verdict["valid"], true, "{verdict}");
+        // even-odd leaves the pentagon out: the nonzero triangles cover too much
+        let wrong = check("even-odd", &result);
+        assert_eq!(wrong.status.code(), Some(1), "merge {merge}");
+        // one triangle fewer: the region is not covered
+        let mut json: Value = serde_json::from_str(&text).expect("result JSON");
+        json["triangles"].as_array_mut().expect("triangles").pop();
+        let short = write(&dir, "short.json", &json.to_string());
+        let short = check("nonzero", &short);
+        assert_eq!(short.status.code(), Some(1), "merge {merge}");
+        assert!(
+            String::from_utf8_lossy(&short.stderr).contains("area"),
+            "{}",
+            String::from_utf8_lossy(&short.stderr)
+        );
+    }
+    let _ = fs::remove_dir_all(dir);
+}

@@ -163,6 +163,81 @@ fn a_crossing_input_said_to_be_valid_fails_the_replay() {
     );
 }
 
+/// A rings JSON whose first ring, a 4×4 square, lies inside its second, a 10×10 square.
+const HOLE_FIRST: &str = "[[[3,3],[7,3],[7,7],[3,7]], [[0,0],[10,0],[10,10],[0,10]]]";
+
+/// `polytri replay ARGS`: its exit status, stdout and stderr.
+fn replay(args: &[&str]) -> (Option<i32>, String, String) {
+    let out = polytri(&[&["replay"], args].concat());
+    (out.status.code(), text(&out.stdout), text(&out.stderr))
+}
+
+/// The verdicts of `case`'s rows in a replay's table, one per strategy and precision.
+fn verdicts<'a>(stdout: &'a str, case: &str) -> Vec<&'a str> {
+    let rows: Vec<&str> = stdout
+        .lines()
+        .filter(|l| l.starts_with(&format!("cases/{case} ")))
+        .collect();
+    assert_eq!(rows.len(), 4, "{case}: {stdout}");
+    rows
+}
+
+#[test]
+fn nesting_applies_to_rings_files_not_to_cases() {
+    let dir = scratch("nesting").join("cases");
+    fs::create_dir_all(&dir).unwrap();
+    fs::write(dir.join("hole_first.json"), HOLE_FIRST).unwrap();
+    // the same rings as a case, which says its nesting itself
+    let case = format!(
+        r#"{{"name": "hole_first_case", "nesting": "first-outer", "rings": {HOLE_FIRST}}}"#
+    );
+    fs::write(dir.join("hole_first_case.json"), case).unwrap();
+    // auto, the default: containment makes the big square outer and the small one its
+    // hole; first-outer: the small square is outer and the big one a hole outside it, an
+    // invalid input that strict mode refuses. The case keeps its first-outer either way.
+    let refused = "refused, lenient ok";
+    for (args, rings_file) in [
+        (&[][..], " valid "),
+        (&["--nesting", "first-outer"][..], refused),
+    ] {
+        let (status, stdout, stderr) = replay(&[args, &[s(&dir)]].concat());
+        assert_eq!(status, Some(0), "{args:?}: {stdout}\n{stderr}");
+        let rows = verdicts(&stdout, "hole_first");
+        assert!(
+            rows.iter().all(|r| r.contains(rings_file)),
+            "{args:?}: {stdout}"
+        );
+        let rows = verdicts(&stdout, "hole_first_case");
+        assert!(
+            rows.iter().all(|r| r.contains(refused)),
+            "{args:?}: {stdout}"
+        );
+    }
+}
+
+#[test]
+fn merge_takes_the_rings_of_a_shapes_file_as_one_set() {
+    let dir = scratch("merge").join("cases");
+    fs::create_dir_all(&dir).unwrap();
+    // two polygons, the second inside the first
+    let shapes = "[[[[0,0],[10,0],[10,10],[0,10]]], [[[3,3],[7,3],[7,7],[3,7]]]]";
+    fs::write(dir.join("square_in_square.json"), shapes).unwrap();
+    // each polygon on its own: two overlapping polygons, which one input cannot hold;
+    // polytri (automatic nesting on the whole input) makes the inner one a hole, and the
+    // replay says that strict mode should have refused
+    let (status, stdout, stderr) = replay(&[s(&dir)]);
+    assert_eq!(status, Some(1), "{stdout}");
+    assert!(
+        stderr.contains("strict mode accepted an invalid input"),
+        "{stderr}"
+    );
+    // merged: one set of rings, the inner square a hole
+    let (status, stdout, stderr) = replay(&["--merge", s(&dir)]);
+    assert_eq!(status, Some(0), "{stdout}\n{stderr}");
+    let rows = verdicts(&stdout, "square_in_square");
+    assert!(rows.iter().all(|r| r.contains(" valid ")), "{stdout}");
+}
+
 #[test]
 fn promote_round_trips_a_case() {
     let dir = scratch("promote");

@@ -29,6 +29,18 @@ pub enum Nesting {
 }
 
 impl Nesting {
+    /// [`Nesting::Roles`] for the rings of `polygons` concatenated: each polygon's first
+    /// ring outer, the rest its holes.
+    pub fn first_ring_outer(polygons: &[Vec<Vec<[f64; 2]>>]) -> Nesting {
+        Nesting::Roles(
+            (polygons.iter())
+                .flat_map(|polygon| {
+                    (0..polygon.len()).map(|k| if k == 0 { Role::Outer } else { Role::Hole })
+                })
+                .collect(),
+        )
+    }
+
     /// The matching option of the triangulator, where there is one (`Roles` has none: run
     /// polytri per polygon, or with [`polytri::Nesting::Auto`]).
     pub fn to_polytri(&self) -> Option<polytri::Nesting> {
@@ -38,6 +50,18 @@ impl Nesting {
             Nesting::Roles(_) => None,
         }
     }
+}
+
+/// How the rings of a file of polygons (each polygon a list of rings) become one
+/// [`Input`]: the command line's `--nesting` and `--merge` ([`Input::from_polygons`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Grouping {
+    /// Which rings are holes: by containment ([`polytri::Nesting::Auto`]), or the first
+    /// ring outer and the rest its holes ([`polytri::Nesting::FirstIsOuter`]) — within
+    /// each polygon, or within the whole file with `merge`.
+    pub nesting: polytri::Nesting,
+    /// All rings of the file as one set of rings, instead of each polygon on its own.
+    pub merge: bool,
 }
 
 /// Polygons as the triangulator takes them: every ring's points in one list, each ring
@@ -88,6 +112,66 @@ impl Input {
             other => other,
         };
         input
+    }
+
+    /// The rings of a file of polygons as one input, read as `grouping` says:
+    ///
+    /// - `merge`: every ring, with [`Nesting::Auto`] or [`Nesting::FirstIsOuter`] (the
+    ///   file's first ring outer, every other ring a hole);
+    /// - first-is-outer: one polygon as [`Nesting::FirstIsOuter`], several as
+    ///   [`Nesting::Roles`] (each polygon's first ring outer, the rest its holes);
+    /// - auto: containment decides within each polygon, decided here with the peers'
+    ///   exact grouping ([`crate::peers::polygons`]) and written as [`Nesting::Roles`],
+    ///   the rings in the groups' order — each outer ring followed by its holes, which is
+    ///   the file's order where every polygon lists its outer ring first. A polygon that
+    ///   is an island in its own hole becomes two. A ring whose containers do not nest
+    ///   (only crossing rings give one) is kept, as an outer ring of its own, so that the
+    ///   judge sees every ring.
+    ///
+    /// Empty rings are left out.
+    ///
+    /// ```
+    /// use polytri_oracle::input::{Grouping, Input, Nesting, Role};
+    ///
+    /// let square = |x: f64, size: f64| vec![[x, x], [x + size, x], [x + size, x + size], [x, x + size]];
+    /// // two polygons, the second inside the first
+    /// let file = vec![vec![square(0.0, 10.0)], vec![square(2.0, 2.0)]];
+    /// let each = Input::from_polygons(&file, Grouping::default());
+    /// assert_eq!(each.nesting, Nesting::Roles(vec![Role::Outer, Role::Outer]));
+    /// let merged = Grouping { merge: true, ..Grouping::default() };
+    /// assert_eq!(Input::from_polygons(&file, merged).nesting, Nesting::Auto);
+    /// ```
+    pub fn from_polygons(polygons: &[Vec<Vec<[f64; 2]>>], grouping: Grouping) -> Self {
+        let rings: Vec<Vec<[f64; 2]>> = polygons.iter().flatten().cloned().collect();
+        let first_is_outer = grouping.nesting == polytri::Nesting::FirstIsOuter;
+        if grouping.merge || (first_is_outer && polygons.len() == 1) {
+            let nesting = if first_is_outer {
+                Nesting::FirstIsOuter
+            } else {
+                Nesting::Auto
+            };
+            return Input::from_rings(&rings, nesting);
+        }
+        if first_is_outer {
+            return Input::from_rings(&rings, Nesting::first_ring_outer(polygons));
+        }
+        let mut grouped = Vec::with_capacity(rings.len());
+        let mut roles = Vec::with_capacity(rings.len());
+        for polygon in polygons {
+            let own = Input::from_rings(polygon, Nesting::Auto);
+            let all: Vec<usize> = (0..own.ring_count()).collect();
+            let (groups, unplaced) = crate::peers::group::nested_groups(&own, &all);
+            let groups = groups
+                .into_iter()
+                .chain(unplaced.into_iter().map(|r| vec![r]));
+            for group in groups {
+                for (k, r) in group.into_iter().enumerate() {
+                    grouped.push(own.vertices[own.ring_range(r)].to_vec());
+                    roles.push(if k == 0 { Role::Outer } else { Role::Hole });
+                }
+            }
+        }
+        Input::from_rings(&grouped, Nesting::Roles(roles))
     }
 
     /// The number of rings.

@@ -15,7 +15,8 @@
 //!   segments), public for tests that need geometry beside a verdict.
 //! - `gen`: seeded generators of valid nested polygons, one per named family.
 //! - `strategy`: proptest strategies over the generators, shrinking to smaller valid inputs.
-//! - `peers`: earcut, earcutr, i_triangle, lyon and spade on the same inputs.
+//! - `peers`: earcut, earcutr, i_triangle, lyon and spade on the same inputs, and earcut
+//!   with exact predicates as a reference.
 //! - `shrink`: a failing case made small, staying valid (ring runs, then vertex runs).
 //! - `campaign`: every family × strategy × precision through the oracle, failures shrunk
 //!   and written as corpus cases (`polytri campaign`).
@@ -72,4 +73,4 @@ pub(crate) fn by_name<T: Copy>(
         })
 }
 pub use gen::{generate, Case, Family, Params};
-pub use input::{Input, Nesting, Role};
+pub use input::{Grouping, Input, Nesting, Role};

@@ -37,7 +37,7 @@ use serde_json::Value;
 
 use crate::check::{check_with, CheckOptions, Verdict};
 use crate::gen::Case;
-use crate::input::{Input, Nesting, Role};
+use crate::input::{Grouping, Input, Nesting};
 
 /// Where polytri's lenient result is further from the input's area than earcut's bound
 /// allows. The one place such gaps are listed: each replaces earcut's bound at its rotation
@@ -277,6 +277,22 @@ impl CorpusCase {
 ///
 /// A message naming the file that could not be read or parsed.
 pub fn load_dir(dir: &Path) -> Result<Vec<CorpusCase>, String> {
+    load_cases(dir, None)
+}
+
+/// Reads every case of a corpus folder as [`load_dir`] does, but its rings JSON and shapes
+/// JSON files as `grouping` says ([`Input::from_polygons`]): `polytri replay --nesting
+/// --merge`. Corpus case files carry their own nesting, and earcut's suite keeps earcut's
+/// convention (its counts and deviation bounds are for it).
+///
+/// # Errors
+///
+/// As [`load_dir`].
+pub fn load_dir_grouped(dir: &Path, grouping: Grouping) -> Result<Vec<CorpusCase>, String> {
+    load_cases(dir, Some(grouping))
+}
+
+fn load_cases(dir: &Path, grouping: Option<Grouping>) -> Result<Vec<CorpusCase>, String> {
     let folder = dir
         .canonicalize()
         .ok()
@@ -292,7 +308,9 @@ pub fn load_dir(dir: &Path) -> Result<Vec<CorpusCase>, String> {
         .filter(|p| p.is_file() && p.extension().is_some_and(|x| x == "json"))
         .collect();
     files.sort();
-    files.iter().map(|path| load_file(path, &folder)).collect()
+    (files.iter())
+        .map(|path| load_file_grouped(path, &folder, grouping))
+        .collect()
 }
 
 fn read_json(path: &Path) -> Result<Value, String> {
@@ -301,7 +319,20 @@ fn read_json(path: &Path) -> Result<Value, String> {
 }
 
 /// One case file: a [`Case`], rings JSON or shapes JSON.
+///
+/// # Errors
+///
+/// A message naming the file, when it cannot be read or parsed.
 pub fn load_file(path: &Path, folder: &str) -> Result<CorpusCase, String> {
+    load_file_grouped(path, folder, None)
+}
+
+/// One case file, its rings or shapes JSON read as `grouping` says where given.
+fn load_file_grouped(
+    path: &Path,
+    folder: &str,
+    grouping: Option<Grouping>,
+) -> Result<CorpusCase, String> {
     let name = path
         .file_stem()
         .map(|s| s.to_string_lossy().into_owned())
@@ -315,7 +346,10 @@ pub fn load_file(path: &Path, folder: &str) -> Result<CorpusCase, String> {
             Expect::from_json(case.expect.as_ref()).map_err(at)?,
         )
     } else {
-        (input_from_array(&value).map_err(at)?, Expect::default())
+        (
+            input_from_array(&value, grouping).map_err(at)?,
+            Expect::default(),
+        )
     };
     Ok(CorpusCase {
         folder: folder.to_owned(),
@@ -326,9 +360,11 @@ pub fn load_file(path: &Path, folder: &str) -> Result<CorpusCase, String> {
     })
 }
 
-/// Rings JSON (depth 3: earcut's convention) or shapes JSON (depth 4: each polygon's
-/// first ring outer, the rest its holes).
-fn input_from_array(value: &Value) -> Result<Input, String> {
+/// Rings JSON (depth 3: one polygon) or shapes JSON (depth 4: a list of polygons), read as
+/// `grouping` says, or else by earcut's convention: a rings JSON's first ring outer
+/// ([`Nesting::FirstIsOuter`]), each shape's first ring outer and the rest its holes
+/// ([`Nesting::Roles`]).
+fn input_from_array(value: &Value, grouping: Option<Grouping>) -> Result<Input, String> {
     let depth = {
         let mut d = 0;
         let mut v = value;
@@ -338,27 +374,26 @@ fn input_from_array(value: &Value) -> Result<Input, String> {
         }
         d
     };
-    match depth {
-        3 => {
-            let rings: Vec<Vec<[f64; 2]>> =
-                serde_json::from_value(value.clone()).map_err(|e| e.to_string())?;
-            Ok(Input::from_rings(&rings, Nesting::FirstIsOuter))
+    let polygons: Vec<Vec<Vec<[f64; 2]>>> = match depth {
+        3 => vec![serde_json::from_value(value.clone()).map_err(|e| e.to_string())?],
+        4 => serde_json::from_value(value.clone()).map_err(|e| e.to_string())?,
+        _ => {
+            return Err(
+                "neither a case (an object with \"rings\"), rings JSON nor shapes JSON".into(),
+            )
         }
-        4 => {
-            let shapes: Vec<Vec<Vec<[f64; 2]>>> =
-                serde_json::from_value(value.clone()).map_err(|e| e.to_string())?;
-            let mut rings = Vec::new();
-            let mut roles = Vec::new();
-            for shape in shapes {
-                for (k, ring) in shape.into_iter().enumerate() {
-                    roles.push(if k == 0 { Role::Outer } else { Role::Hole });
-                    rings.push(ring);
-                }
-            }
-            Ok(Input::from_rings(&rings, Nesting::Roles(roles)))
-        }
-        _ => Err("neither a case (an object with \"rings\"), rings JSON nor shapes JSON".into()),
+    };
+    if let Some(grouping) = grouping {
+        return Ok(Input::from_polygons(&polygons, grouping));
     }
+    let rings: Vec<Vec<[f64; 2]>> = polygons.iter().flatten().cloned().collect();
+    if depth == 3 {
+        return Ok(Input::from_rings(&rings, Nesting::FirstIsOuter));
+    }
+    Ok(Input::from_rings(
+        &rings,
+        Nesting::first_ring_outer(&polygons),
+    ))
 }
 
 /// earcut's suite: the fixtures `expected.json` names, with their bounds.
@@ -1071,6 +1106,7 @@ pub fn replay_all(cases: &[CorpusCase]) -> Vec<Replay> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::input::Role;
 
     fn case(rings: &[Vec<[f64; 2]>], expect: Expect) -> CorpusCase {
         CorpusCase {
@@ -1104,13 +1140,13 @@ mod tests {
     fn reads_rings_and_shapes_json() {
         let rings = serde_json::json!([[[0, 0], [1, 0], [0, 1]]]);
         assert_eq!(
-            input_from_array(&rings).unwrap().nesting,
+            input_from_array(&rings, None).unwrap().nesting,
             Nesting::FirstIsOuter
         );
         let shapes = serde_json::json!([[[[0, 0], [4, 0], [0, 4]], [[1, 1], [2, 1], [1, 2]]]]);
-        let input = input_from_array(&shapes).unwrap();
+        let input = input_from_array(&shapes, None).unwrap();
         assert_eq!(input.nesting, Nesting::Roles(vec![Role::Outer, Role::Hole]));
-        assert!(input_from_array(&serde_json::json!([1, 2])).is_err());
+        assert!(input_from_array(&serde_json::json!([1, 2]), None).is_err());
         let expect = Expect::from_json(Some(&serde_json::json!({"triangles": 2, "x": 1}))).unwrap();
         assert_eq!(expect.triangles, Some(2));
         assert!(Expect::from_json(Some(&serde_json::json!({"triangles": "two"}))).is_err());

@@ -1,5 +1,5 @@
-//! Every peer on small known polygons and on earcut's fixtures: triangle counts and area
-//! sums, computed here from the rings.
+//! Every peer, and the references, on small known polygons and on earcut's fixtures:
+//! triangle counts and area sums, computed here from the rings.
 
 use std::path::PathBuf;
 
@@ -57,6 +57,11 @@ fn run(peer: Peer, input: &Input, area: f64, tolerance: f64) -> PeerOutput {
     out
 }
 
+/// Every peer, then the references (earcut with exact predicates, and its baseline).
+fn every_peer() -> impl Iterator<Item = Peer> {
+    Peer::ALL.into_iter().chain(Peer::REFERENCES)
+}
+
 /// lyon computes in f32: its areas are only that close.
 fn tolerance(peer: Peer) -> f64 {
     if peer == Peer::Lyon {
@@ -69,7 +74,7 @@ fn tolerance(peer: Peer) -> f64 {
 #[test]
 fn every_peer_triangulates_a_square_with_a_hole() {
     let input = square_with_hole();
-    for peer in Peer::ALL {
+    for peer in every_peer() {
         let out = run(peer, &input, 84.0, 1e-12);
         assert_eq!(out.triangles.len(), 8, "{peer}");
         assert_eq!(
@@ -82,7 +87,7 @@ fn every_peer_triangulates_a_square_with_a_hole() {
 #[test]
 fn every_peer_with_f32_or_unsupported() {
     let input = square_with_hole();
-    for peer in Peer::ALL {
+    for peer in every_peer() {
         match peers::triangulate_f32(peer, &input) {
             Ok(out) => {
                 assert_eq!(out.triangles.len(), 8, "{peer}");
@@ -117,7 +122,7 @@ fn auto_nesting_and_roles_give_islands_to_every_peer() {
         Nesting::Roles(vec![Role::Outer, Role::Hole, Role::Outer, Role::Outer]),
     );
     for input in [&auto, &roles] {
-        for peer in Peer::ALL {
+        for peer in every_peer() {
             let out = run(peer, input, 69.0, 1e-12);
             assert_eq!(out.triangles.len(), 8 + 2 + 2, "{peer}");
         }
@@ -139,7 +144,7 @@ fn peers_refuse_instead_of_panicking() {
         &[vec![[0.0, 0.0], [1e300, 0.0], [1e300, 1e300]]],
         Nesting::FirstIsOuter,
     );
-    for peer in Peer::ALL {
+    for peer in every_peer() {
         assert!(peers::triangulate(peer, &nan).is_err(), "{peer}");
         // anything but a panic will do
         let _ = peers::triangulate(peer, &crossing);
@@ -180,7 +185,7 @@ fn every_peer_on_earcut_fixtures() {
         let (rings, count) = fixture(name);
         let input = Input::from_rings(&rings, Nesting::FirstIsOuter);
         let area = polygon_area(&rings);
-        for peer in Peer::ALL {
+        for peer in every_peer() {
             let out = run(peer, &input, area, tolerance(peer));
             if peer == Peer::ITriangle {
                 // i_triangle drops collinear vertices: fewer triangles, same area

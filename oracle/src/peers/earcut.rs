@@ -1,7 +1,9 @@
-//! earcut (the georust port) and earcutr: one polygon at a time, outer ring first.
+//! earcut (the georust port), its vendored copies (exact predicates, and earcut's own) and
+//! earcutr: one polygon at a time, outer ring first.
 
 use num_traits::Float;
 
+use super::earcut_exact::{exact, vendored};
 use super::group::{polygons, Polygon};
 use super::{PeerOutput, Precision};
 use crate::input::Input;
@@ -16,10 +18,8 @@ pub(super) fn earcut(input: &Input, precision: Precision) -> Result<PeerOutput, 
 
 fn earcut_in<T: Float>(input: &Input, convert: impl Fn(f64) -> T) -> PeerOutput {
     let mut earcut = ::earcut::Earcut::<T>::new();
-    let mut out: Vec<u32> = Vec::new();
     let mut vertices: Vec<[T; 2]> = Vec::new();
-    let mut triangles = Vec::new();
-    for polygon in polygons(input) {
+    each_polygon(input, |polygon, out| {
         vertices.clear();
         vertices.extend(
             polygon
@@ -27,7 +27,35 @@ fn earcut_in<T: Float>(input: &Input, convert: impl Fn(f64) -> T) -> PeerOutput 
                 .iter()
                 .map(|p| [convert(p[0]), convert(p[1])]),
         );
-        earcut.earcut_slice(&vertices, &polygon.hole_indices(), &mut out);
+        earcut.earcut_slice(&vertices, &polygon.hole_indices(), out);
+    })
+}
+
+/// earcut with exact predicates on every polygon of `input`, in `f64` (an `f32` input's
+/// coordinates widened exactly), triangles mapped back to input indices.
+pub(super) fn earcut_exact(input: &Input) -> PeerOutput {
+    let mut earcut = exact::Earcut::new();
+    each_polygon(input, |p, out| {
+        earcut.earcut_slice(&p.vertices, &p.hole_indices(), out)
+    })
+}
+
+/// earcut-exact's baseline, the same copy with earcut's own predicates, as
+/// [`earcut_exact`].
+pub(super) fn earcut_vendored(input: &Input) -> PeerOutput {
+    let mut earcut = vendored::Earcut::new();
+    each_polygon(input, |p, out| {
+        earcut.earcut_slice(&p.vertices, &p.hole_indices(), out)
+    })
+}
+
+/// Runs `triangulate` (a polygon; it writes earcut's flat index list) on every polygon of
+/// `input`, and gathers the triangles mapped back to input indices.
+fn each_polygon(input: &Input, mut triangulate: impl FnMut(&Polygon, &mut Vec<u32>)) -> PeerOutput {
+    let mut out: Vec<u32> = Vec::new();
+    let mut triangles = Vec::new();
+    for polygon in polygons(input) {
+        triangulate(&polygon, &mut out);
         push_mapped(&mut triangles, &polygon, out.iter().map(|&v| v as usize));
     }
     PeerOutput {

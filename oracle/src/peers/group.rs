@@ -75,6 +75,24 @@ pub fn polygons(input: &Input) -> Vec<Polygon> {
 
 /// Groups by containment depth: see [`polygons`].
 fn by_containment(input: &Input, rings: &[usize]) -> Vec<Polygon> {
+    let (groups, _) = nested_groups(input, rings);
+    (groups.iter())
+        .map(|group| {
+            let mut polygon = Polygon::default();
+            for &r in group {
+                polygon.push_ring(input, r);
+            }
+            polygon
+        })
+        .collect()
+}
+
+/// The rings of `rings` (indices into `input`) grouped by containment depth, as
+/// [`polygons`] does for [`Nesting::Auto`]: each group an outer ring (even depth, in input
+/// order) followed by its holes (odd depth, each the hole of the innermost ring containing
+/// it). Second, the rings no group took: at odd depth with an innermost container at odd
+/// depth too, which only crossing rings give.
+pub(crate) fn nested_groups(input: &Input, rings: &[usize]) -> (Vec<Vec<usize>>, Vec<usize>) {
     let boxes: Vec<[f64; 4]> = rings
         .iter()
         .map(|&r| bounding_box(&input.vertices[input.ring_range(r)]))
@@ -89,26 +107,26 @@ fn by_containment(input: &Input, rings: &[usize]) -> Vec<Polygon> {
         }
     }
     let depth: Vec<usize> = containers.iter().map(Vec::len).collect();
-    let mut polygon_of: Vec<Option<usize>> = vec![None; rings.len()];
-    let mut polygons = Vec::new();
+    let mut group_of: Vec<Option<usize>> = vec![None; rings.len()];
+    let mut groups: Vec<Vec<usize>> = Vec::new();
     for (i, &r) in rings.iter().enumerate() {
         if depth[i].is_multiple_of(2) {
-            polygon_of[i] = Some(polygons.len());
-            let mut polygon = Polygon::default();
-            polygon.push_ring(input, r);
-            polygons.push(polygon);
+            group_of[i] = Some(groups.len());
+            groups.push(vec![r]);
         }
     }
+    let mut unplaced = Vec::new();
     for (i, &r) in rings.iter().enumerate() {
         if !depth[i].is_multiple_of(2) {
             // the innermost container is the one nested deepest itself
             let parent = containers[i].iter().copied().max_by_key(|&j| depth[j]);
-            if let Some(p) = parent.and_then(|j| polygon_of[j]) {
-                polygons[p].push_ring(input, r);
+            match parent.and_then(|j| group_of[j]) {
+                Some(g) => groups[g].push(r),
+                None => unplaced.push(r),
             }
         }
     }
-    polygons
+    (groups, unplaced)
 }
 
 /// `[min x, min y, max x, max y]` of `points`.

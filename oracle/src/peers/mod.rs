@@ -1,4 +1,7 @@
-//! Other triangulators on the same inputs: earcut, earcutr, i_triangle, lyon and spade.
+//! Other triangulators on the same inputs: earcut, earcutr, i_triangle, lyon and spade —
+//! and two references, which are no competitors ([`Peer::REFERENCES`]): earcut with exact
+//! predicates, and its baseline, the same copy of earcut's code with earcut's own
+//! predicates; together they show what exactness costs earcut's own code.
 //!
 //! Two faces:
 //!
@@ -12,7 +15,8 @@
 //!   benchmarks time the triangulation alone and not the conversion into each library's
 //!   input format.
 //!
-//! Input conventions: earcut and earcutr take one polygon at a time, outer ring first —
+//! Input conventions: earcut (and the references) and earcutr take one polygon at a time,
+//! outer ring first —
 //! they get the input's polygons ([`polygons`]), grouped by containment when the input
 //! says [`Nesting::Auto`](crate::Nesting::Auto). i_triangle and lyon take every ring at once
 //! with the even-odd fill rule, spade takes every ring as a constraint and keeps the faces
@@ -24,7 +28,7 @@
 //!
 //! let square = vec![[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]];
 //! let input = Input::from_rings(&[square], Nesting::FirstIsOuter);
-//! for peer in Peer::ALL {
+//! for peer in Peer::ALL.into_iter().chain(Peer::REFERENCES) {
 //!     let out = peers::triangulate(peer, &input).expect("a square is easy");
 //!     assert_eq!(out.triangles.len(), 2, "{peer}");
 //! }
@@ -37,7 +41,8 @@ use std::str::FromStr;
 use crate::input::Input;
 
 mod earcut;
-mod group;
+mod earcut_exact;
+pub(crate) mod group;
 mod i_triangle;
 mod lyon;
 mod runner;
@@ -60,10 +65,21 @@ pub enum Peer {
     /// `spade`'s constrained Delaunay triangulation of the rings, kept where the nesting
     /// depth is odd.
     Spade,
+    /// A reference, not a competitor: earcut 0.4.12 vendored with its two geometric
+    /// predicates (a triangle's signed area, a point in a triangle) decided by the exact
+    /// sign of `robust::orient2d`, everything else unchanged
+    /// (`oracle/src/peers/earcut_exact/README.md`).
+    EarcutExact,
+    /// A reference, not a competitor: the same copy of earcut 0.4.12 with earcut's own
+    /// floating-point predicates — [`Peer::EarcutExact`]'s baseline. EarcutExact over it is
+    /// the price of the exact predicates alone; it over [`Peer::Earcut`], what the copy
+    /// itself costs (in part its safe node access).
+    EarcutVendored,
 }
 
 impl Peer {
-    /// Every peer, in the order tables show them.
+    /// Every peer, in the order tables show them: the triangulators polytri is compared
+    /// with (the references are in [`Peer::REFERENCES`]).
     pub const ALL: [Peer; 5] = [
         Peer::Earcut,
         Peer::Earcutr,
@@ -72,10 +88,21 @@ impl Peer {
         Peer::Spade,
     ];
 
+    /// The references: peers altered to measure a cost, shown beside the peers but never
+    /// one of them (not the fastest peer of a benchmark, not judged by campaigns).
+    pub const REFERENCES: [Peer; 2] = [Peer::EarcutExact, Peer::EarcutVendored];
+
+    /// Whether this is one of [`Peer::REFERENCES`].
+    pub const fn is_reference(self) -> bool {
+        matches!(self, Peer::EarcutExact | Peer::EarcutVendored)
+    }
+
     /// The kebab-case name, as [`Display`](fmt::Display) writes and [`FromStr`] reads it.
     pub const fn name(self) -> &'static str {
         match self {
             Peer::Earcut => "earcut",
+            Peer::EarcutExact => "earcut-exact",
+            Peer::EarcutVendored => "earcut-vendored",
             Peer::Earcutr => "earcutr",
             Peer::ITriangle => "i-triangle",
             Peer::Lyon => "lyon",
@@ -93,9 +120,11 @@ impl fmt::Display for Peer {
 impl FromStr for Peer {
     type Err = String;
 
-    /// Reads a kebab-case name (`i_triangle` with an underscore is accepted too).
+    /// Reads a kebab-case name, of a peer or a reference (`i_triangle` with an underscore
+    /// is accepted too).
     fn from_str(s: &str) -> Result<Self, Self::Err> {
-        crate::by_name(&s.replace('_', "-"), &Peer::ALL, Peer::name, "peer")
+        let named: Vec<Peer> = Peer::ALL.into_iter().chain(Peer::REFERENCES).collect();
+        crate::by_name(&s.replace('_', "-"), &named, Peer::name, "peer")
     }
 }
 
@@ -152,7 +181,9 @@ pub fn triangulate(peer: Peer, input: &Input) -> Result<PeerOutput, String> {
 /// Triangulates `input` with `peer` in `f32`: the coordinates rounded to `f32` first.
 /// Triangles index [`Input::to_f32`]'s vertices when `vertices` is `None`.
 ///
-/// Supported by earcut, earcutr, i_triangle and lyon (lyon always computes in `f32`).
+/// Supported by earcut, earcutr, i_triangle and lyon (lyon always computes in `f32`), and
+/// by the references earcut-exact and earcut-vendored (on the rounded coordinates, in
+/// `f64`).
 ///
 /// # Errors
 ///
@@ -171,6 +202,8 @@ fn run_once(peer: Peer, input: &Input, precision: Precision) -> Result<PeerOutpu
     // must report that as a refusal, never go down with it.
     let result = catch_unwind(AssertUnwindSafe(|| match peer {
         Peer::Earcut => earcut::earcut(input, precision),
+        Peer::EarcutExact => Ok(earcut::earcut_exact(input)),
+        Peer::EarcutVendored => Ok(earcut::earcut_vendored(input)),
         Peer::Earcutr => earcut::earcutr(input, precision),
         Peer::ITriangle => i_triangle::triangulate(input, precision),
         Peer::Lyon => lyon::triangulate(input),

@@ -8,6 +8,7 @@ use i_triangle::float::triangulation::Triangulation;
 use lyon_tessellation::path::Path;
 use lyon_tessellation::{BuffersBuilder, FillTessellator, FillVertex, VertexBuffers};
 
+use super::earcut_exact::{exact, vendored};
 use super::group::{polygons, Polygon};
 use super::spade::Constraints;
 use super::{check_finite, panic_message, Peer};
@@ -41,6 +42,9 @@ pub enum Implementation {
     /// polytri with [`polytri::Strategy::Seidel`] (trapezoidation), strict. Not in the
     /// default set: ask for it with `--polytri seidel`.
     PolytriSeidel,
+    /// [`PolytriEvenOdd`](Self::PolytriEvenOdd) with [`polytri::Strategy::Seidel`]: the
+    /// resolved region trapezoidated. Not in the default set: `--polytri seidel-even-odd`.
+    PolytriSeidelEvenOdd,
     /// Another triangulator.
     Peer(Peer),
 }
@@ -56,7 +60,7 @@ impl Implementation {
     ];
 
     /// Every polytri configuration: the default ones, then the optional ones.
-    pub const POLYTRI_ALL: [Implementation; 7] = [
+    pub const POLYTRI_ALL: [Implementation; 8] = [
         Implementation::PolytriFast,
         Implementation::PolytriLenient,
         Implementation::PolytriQuality,
@@ -64,19 +68,26 @@ impl Implementation {
         Implementation::PolytriThreads,
         Implementation::PolytriEvenOdd,
         Implementation::PolytriSeidel,
+        Implementation::PolytriSeidelEvenOdd,
     ];
 
-    /// Every default polytri configuration, then every peer.
+    /// Every default polytri configuration, then every peer, then the references.
     pub fn all() -> Vec<Implementation> {
-        Self::POLYTRI
-            .into_iter()
+        (Self::POLYTRI.into_iter())
             .chain(Peer::ALL.into_iter().map(Implementation::Peer))
+            .chain(Peer::REFERENCES.into_iter().map(Implementation::Peer))
             .collect()
     }
 
-    /// Whether this is polytri (as opposed to a peer).
+    /// Whether this is polytri (as opposed to a peer or a reference).
     pub const fn is_polytri(self) -> bool {
         !matches!(self, Implementation::Peer(_))
+    }
+
+    /// Whether this is a peer, one polytri is compared with: not polytri, not a reference
+    /// ([`Peer::REFERENCES`]).
+    pub const fn is_peer(self) -> bool {
+        matches!(self, Implementation::Peer(peer) if !peer.is_reference())
     }
 
     /// Whether this makes triangles: all but [`PolytriCheck`](Self::PolytriCheck).
@@ -94,6 +105,7 @@ impl Implementation {
             Implementation::PolytriThreads => "polytri-threads",
             Implementation::PolytriEvenOdd => "polytri-even-odd",
             Implementation::PolytriSeidel => "polytri-seidel",
+            Implementation::PolytriSeidelEvenOdd => "polytri-seidel-even-odd",
             Implementation::Peer(peer) => peer.name(),
         }
     }
@@ -122,7 +134,8 @@ impl FromStr for Implementation {
 #[derive(Clone, Debug)]
 pub struct Prepared {
     input: Input,
-    /// The polygons, outer ring first (earcut, earcutr; polytri for `Roles` inputs).
+    /// The polygons, outer ring first (earcut and its copies, earcutr; polytri for `Roles`
+    /// inputs).
     polygons: Vec<Polygon>,
     /// Each polygon's hole starts as earcut takes them.
     holes: Vec<Vec<u32>>,
@@ -176,6 +189,8 @@ pub struct Runner {
     polytri_out: Vec<[u32; 3]>,
     polytri_many_out: Vec<Vec<[u32; 3]>>,
     earcut: earcut::Earcut<f64>,
+    earcut_exact: exact::Earcut,
+    earcut_vendored: vendored::Earcut,
     earcut_out: Vec<u32>,
     i_triangle: i_triangle::float::triangulator::Triangulator<u32, i32>,
     i_triangle_out: Triangulation<[f64; 2], u32>,
@@ -203,6 +218,8 @@ impl Runner {
             polytri_out: Vec::new(),
             polytri_many_out: Vec::new(),
             earcut: earcut::Earcut::new(),
+            earcut_exact: exact::Earcut::new(),
+            earcut_vendored: vendored::Earcut::new(),
             earcut_out: Vec::new(),
             i_triangle: super::i_triangle::triangulator(64),
             i_triangle_out: Triangulation::with_capacity(64),
@@ -247,25 +264,39 @@ impl Runner {
                 prepared,
                 polytri::Options::new().with_strategy(polytri::Strategy::Seidel),
             ),
-            Implementation::PolytriEvenOdd => {
-                let input = &prepared.input;
-                let options = polytri::Options::new().with_fill_rule(polytri::FillRule::EvenOdd);
-                (self.polytri)
-                    .triangulate(
-                        &input.vertices,
-                        &input.ring_starts,
-                        &options,
-                        &mut self.polytri_out,
-                    )
-                    .map(|report| report.triangles)
-                    .map_err(|e| e.to_string())
+            Implementation::PolytriEvenOdd => self.polytri_fill(prepared, polytri::Strategy::Fast),
+            Implementation::PolytriSeidelEvenOdd => {
+                self.polytri_fill(prepared, polytri::Strategy::Seidel)
             }
-            Implementation::Peer(Peer::Earcut) => Ok(self.earcut(prepared)),
+            Implementation::Peer(
+                peer @ (Peer::Earcut | Peer::EarcutExact | Peer::EarcutVendored),
+            ) => Ok(self.earcut(prepared, peer)),
             Implementation::Peer(Peer::Earcutr) => earcutr(prepared),
             Implementation::Peer(Peer::ITriangle) => Ok(self.i_triangle(prepared)),
             Implementation::Peer(Peer::Lyon) => self.lyon(prepared),
             Implementation::Peer(Peer::Spade) => spade(prepared),
         }
+    }
+
+    /// polytri with the even–odd fill rule on all the input's rings at once.
+    fn polytri_fill(
+        &mut self,
+        prepared: &Prepared,
+        strategy: polytri::Strategy,
+    ) -> Result<usize, String> {
+        let input = &prepared.input;
+        let options = polytri::Options::new()
+            .with_fill_rule(polytri::FillRule::EvenOdd)
+            .with_strategy(strategy);
+        (self.polytri)
+            .triangulate(
+                &input.vertices,
+                &input.ring_starts,
+                &options,
+                &mut self.polytri_out,
+            )
+            .map(|report| report.triangles)
+            .map_err(|e| e.to_string())
     }
 
     /// polytri on the whole input for `Auto` and `FirstIsOuter`, else per polygon (each
@@ -315,12 +346,17 @@ impl Runner {
         })
     }
 
-    fn earcut(&mut self, prepared: &Prepared) -> usize {
+    /// earcut, or one of its vendored copies (`peer`), on every polygon.
+    fn earcut(&mut self, prepared: &Prepared, peer: Peer) -> usize {
         let mut triangles = 0;
         for (polygon, holes) in prepared.polygons.iter().zip(&prepared.holes) {
-            self.earcut
-                .earcut_slice(&polygon.vertices, holes, &mut self.earcut_out);
-            triangles += self.earcut_out.len() / 3;
+            let (data, out) = (&polygon.vertices, &mut self.earcut_out);
+            match peer {
+                Peer::EarcutExact => self.earcut_exact.earcut_slice(data, holes, out),
+                Peer::EarcutVendored => self.earcut_vendored.earcut_slice(data, holes, out),
+                _ => self.earcut.earcut_slice(data, holes, out),
+            }
+            triangles += out.len() / 3;
         }
         triangles
     }

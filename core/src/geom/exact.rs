@@ -227,6 +227,70 @@ impl SnapGrid {
     /// The grid point nearest to where segments a–b and c–d cross (they must cross at a
     /// point interior to both, not collinear), exactly rounded.
     pub fn crossing(self, a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> [f64; 2] {
+        if let Some(p) = self.crossing_quickly(a, b, c, d) {
+            return p;
+        }
+        self.crossing_exactly(a, b, c, d)
+    }
+
+    /// [`SnapGrid::crossing`] in floating point, where that decides: the crossing
+    /// p = a + t·(b − a), t = A / (A − B), A and B the orientations of a and b against
+    /// c–d, each with Shewchuk's error bound; `Some` only when every point within the
+    /// resulting error bound of the float p lies well inside one grid point's pixel, so
+    /// that the exact crossing rounds to it. Most crossings end here.
+    fn crossing_quickly(
+        self,
+        a: [f64; 2],
+        b: [f64; 2],
+        c: [f64; 2],
+        d: [f64; 2],
+    ) -> Option<[f64; 2]> {
+        const E: f64 = f64::EPSILON;
+        // orientation of p against c–d, and a bound on its error (Shewchuk's first bound
+        // is 1.5·E·detsum; 4·E is generous)
+        let orient = |p: [f64; 2]| {
+            let left = (d[0] - c[0]) * (p[1] - c[1]);
+            let right = (d[1] - c[1]) * (p[0] - c[0]);
+            (left - right, 4.0 * E * (left.abs() + right.abs()))
+        };
+        let ((oa, ea), (ob, eb)) = (orient(a), orient(b));
+        // a proper crossing: opposite sides, each clearly
+        if !(oa.abs() > 4.0 * ea && ob.abs() > 4.0 * eb) || (oa > 0.0) == (ob > 0.0) {
+            return None;
+        }
+        let whole = oa.abs() + ob.abs();
+        let t = oa / (oa - ob);
+        // t's error: first order in the orientations' errors (doubled: they are below a
+        // quarter of each), plus the division's rounding
+        let dt = 2.0 * (ea * ob.abs() + eb * oa.abs()) / (whole * whole) + 4.0 * E;
+        let mut p = [0.0; 2];
+        for k in 0..2 {
+            let (span, step) = (b[k] - a[k], t * (b[k] - a[k]));
+            let g = self.near(a[k] + step);
+            // p − g as (a − g) + t·(b − a), with a − g exact (Sterbenz: within a factor
+            // 2 of each other, or one of them 0), so that the error is that of t·(b − a),
+            // not half a step of p's own rounding
+            let sterbenz = (a[k] > 0.0) == (g > 0.0)
+                && a[k].abs() <= 2.0 * g.abs()
+                && g.abs() <= 2.0 * a[k].abs();
+            if !g.is_finite() || !(sterbenz || a[k] == 0.0 || g == 0.0) {
+                return None;
+            }
+            let base = a[k] - g;
+            let off = base + step;
+            let err = span.abs() * dt + 4.0 * E * (span.abs() + base.abs() + off.abs());
+            // the pixel of g: half its steps below and above (exact differences)
+            let (below, above) = ((g - self.down(g)) / 2.0, (self.up(g) - g) / 2.0);
+            if !(off - err > -below && off + err < above) {
+                return None;
+            }
+            p[k] = g;
+        }
+        Some(p)
+    }
+
+    /// [`SnapGrid::crossing`] in exact arithmetic.
+    fn crossing_exactly(self, a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> [f64; 2] {
         // p = (b·A − a·B) / (A − B) with A = orient(c, d, a), B = orient(c, d, b)
         let oa = orient_exp(c, d, a);
         let ob = orient_exp(c, d, b);
@@ -479,5 +543,75 @@ mod tests {
         }
         // the filter is of use: it decides most of these
         assert!(decided * 2 > total, "{decided} of {total}");
+    }
+
+    #[test]
+    fn the_float_crossing_agrees_with_the_exact_one() {
+        let mut x: u64 = 0x9e37_79b9_7f4a_7c15;
+        let mut rand = move || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            (x >> 11) as f64 / (1u64 << 53) as f64
+        };
+        // (decided, crossing) cases: f32, and f64 with short segments far out
+        let (mut f32_cases, mut far_cases) = ((0, 0), (0, 0));
+        for f32 in [false, true] {
+            let g = SnapGrid { f32 };
+            let snap = |v: f64| if f32 { f64::from(v as f32) } else { v };
+            for k in 0..20_000 {
+                // segments short against their coordinates half the time (map data)
+                let scale = 2f64.powi((rand() * 80.0) as i32 - 40);
+                let offset = if k % 2 == 0 {
+                    0.0
+                } else {
+                    scale * 2f64.powi((rand() * 30.0) as i32)
+                };
+                let mut pt = || [snap(offset + rand() * scale), snap(offset + rand() * scale)];
+                let (a, b, c) = (pt(), pt(), pt());
+                // d: random, or (every fourth case) nearly through a or b
+                let d = if k % 4 == 0 {
+                    let (e, t) = (if k % 8 == 0 { a } else { b }, 1.0 + rand());
+                    [
+                        snap(c[0] + t * (e[0] - c[0])),
+                        snap(c[1] + t * (e[1] - c[1])),
+                    ]
+                } else {
+                    pt()
+                };
+                let crosses = |p: [f64; 2], q: [f64; 2], r: [f64; 2], s: [f64; 2]| {
+                    let o = |u: [f64; 2], v: [f64; 2], w: [f64; 2]| orient_exp(u, v, w).sign();
+                    o(p, q, r) != o(p, q, s)
+                        && o(r, s, p) != o(r, s, q)
+                        && [o(p, q, r), o(p, q, s), o(r, s, p), o(r, s, q)]
+                            .iter()
+                            .all(|&x| x != Ordering::Equal)
+                };
+                if !crosses(a, b, c, d) {
+                    continue;
+                }
+                let quick = g.crossing_quickly(a, b, c, d);
+                if let Some(quick) = quick {
+                    assert_eq!(
+                        quick,
+                        g.crossing_exactly(a, b, c, d),
+                        "{a:?} {b:?} {c:?} {d:?}"
+                    );
+                }
+                let count = if f32 {
+                    &mut f32_cases
+                } else if k % 2 == 1 {
+                    &mut far_cases
+                } else {
+                    continue;
+                };
+                *count = (count.0 + usize::from(quick.is_some()), count.1 + 1);
+            }
+        }
+        // the filter is of use: it decides most f32 crossings, and most f64 ones where the
+        // segments are short against their coordinates (map data)
+        for (decided, total) in [f32_cases, far_cases] {
+            assert!(total > 1_000 && decided * 2 > total, "{decided} of {total}");
+        }
     }
 }

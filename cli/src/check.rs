@@ -5,7 +5,7 @@ use std::io::{self, Write};
 use std::path::PathBuf;
 
 use polytri_oracle::{
-    check_fill, check_with, CheckOptions, Input as OracleInput, Nesting, Role, Verdict,
+    check_fill, check_with, CheckOptions, Input as OracleInput, Nesting, Verdict,
 };
 use serde::Deserialize;
 
@@ -489,17 +489,13 @@ fn sum_verdicts(verdicts: &[(usize, Verdict)], several: bool) -> Verdict {
     sum
 }
 
-/// The file's polygons as the oracle's input, all together (`--merge`).
+/// The file's polygons as the oracle's input, all together (`--merge`), as `polytri
+/// triangulate --merge` reads them: containment decides, or (first-outer) the file's
+/// first ring is outer and every other ring a hole.
 fn to_oracle(layout: &Layout, nesting: NestingArg) -> OracleInput {
     let nesting = match nesting {
         NestingArg::Auto => Nesting::Auto,
-        NestingArg::FirstOuter => Nesting::Roles(
-            layout
-                .ring_origins
-                .iter()
-                .map(|o| if o.is_hole() { Role::Hole } else { Role::Outer })
-                .collect(),
-        ),
+        NestingArg::FirstOuter => Nesting::FirstIsOuter,
     };
     OracleInput::new(layout.vertices.clone(), layout.ring_starts.clone(), nesting)
 }
@@ -519,16 +515,15 @@ mod tests {
     use super::*;
 
     #[test]
-    fn polygons_give_roles_per_ring() {
+    fn merged_first_outer_makes_the_file_s_first_ring_outer() {
+        // as `triangulate --merge --nesting first-outer` reads the file
         let square = vec![[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]];
         let hole = vec![[1.0, 1.0], [1.0, 2.0], [2.0, 2.0]];
         let layout = Layout::new(&[vec![square.clone(), vec![], hole], vec![square]]);
         let oracle = to_oracle(&layout, NestingArg::FirstOuter);
-        assert_eq!(
-            oracle.nesting,
-            Nesting::Roles(vec![Role::Outer, Role::Hole, Role::Outer])
-        );
+        assert_eq!(oracle.nesting, Nesting::FirstIsOuter);
         assert_eq!(oracle.ring_starts, vec![0, 4, 7]);
+        assert_eq!(to_oracle(&layout, NestingArg::Auto).nesting, Nesting::Auto);
     }
 
     #[test]

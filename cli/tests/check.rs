@@ -179,3 +179,38 @@ fn each_polygon_is_judged_on_its_own() {
         "{stderr}"
     );
 }
+
+/// `--merge --nesting first-outer` means the same in `triangulate` and `check`: the file's
+/// first ring is outer, every other ring a hole in it.
+#[test]
+fn merged_first_outer_means_the_same_in_both_commands() {
+    let dir = scratch("merged-first-outer");
+    // two polygons, the second's square inside the first: merged, a hole
+    let file = write(
+        &dir,
+        "shapes.json",
+        "[[[[0,0],[10,0],[10,10],[0,10]]], [[[2,2],[4,2],[4,4],[2,4]]]]",
+    );
+    let result = dir.join("result.json");
+    let flags = [path("--merge"), path("--nesting"), path("first-outer")];
+    let mut args = vec![path("triangulate"), &file, path("-o"), &result];
+    args.extend(flags);
+    let out = polytri(&args);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let mut args = vec![path("check"), &file, &result, path("--fast")];
+    args.extend(flags);
+    let out = polytri(&args);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let verdict: Value = serde_json::from_slice(&out.stdout).expect("verdict JSON");
+    // 4 + 4 vertices, one hole: 8 triangles
+    assert_eq!(verdict["triangles"], 8, "{verdict}");
+    let _ = fs::remove_dir_all(dir);
+}

@@ -6,7 +6,7 @@ use super::pipeline::Stages;
 use crate::context::Context;
 use crate::geom::{orient2d, Coord, Orientation, Point, SnapGrid};
 use crate::report::{DropReason, Dropped};
-use crate::stages::{load, resolve, seidel};
+use crate::stages::{clean, load, resolve, seidel};
 use crate::{Error, FillRule, Nesting, Options, Strategy};
 
 /// The fill path's buffers.
@@ -47,6 +47,10 @@ pub(crate) fn triangulate<T: Coord>(
     // the input's own errors (non-finite coordinates, ring starts), as strict mode gives them
     cx.reset(false);
     load::load(cx, vertices, ring_starts)?;
+    // strict mode's crossing check (a sweep, O(n log n)): where it passes, no two edges
+    // cross and `resolve` need not search for crossings, which costs more where many long
+    // edges share the cells of its grid
+    let uncrossed = clean::clean(cx, &mut st.clean, false).is_ok();
     fs.vertices.clear();
     fs.vertices
         .extend(vertices.iter().map(|v| [v[0].to_f64(), v[1].to_f64()]));
@@ -59,6 +63,7 @@ pub(crate) fn triangulate<T: Coord>(
         ring_starts,
         rule,
         grid,
+        uncrossed,
         &mut added,
     );
     if let Err(e) = resolved {

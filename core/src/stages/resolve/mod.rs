@@ -80,13 +80,15 @@ pub(crate) struct Scratch {
 
 /// Resolves `vertices` (finite, widened to `f64`) and `ring_starts` (checked by `load`)
 /// into rings bounding `rule`'s region, rounding crossings to `grid`; the added vertices
-/// go to `added`.
+/// go to `added`. `uncrossed`: the caller has proved that no two edges cross (strict
+/// mode's check passed), so the crossing search is skipped.
 pub(crate) fn resolve(
     s: &mut Scratch,
     vertices: &[[f64; 2]],
     ring_starts: &[usize],
     rule: FillRule,
     grid: SnapGrid,
+    uncrossed: bool,
     added: &mut Vec<Added>,
 ) -> Result<(), Error> {
     s.rings.clear();
@@ -109,7 +111,11 @@ pub(crate) fn resolve(
             .max(hi[0].abs())
             .max(hi[1].abs()),
     );
-    find_crossings(s, lo, hi, grid, reach);
+    if uncrossed {
+        s.crossings.clear();
+    } else {
+        find_crossings(s, lo, hi, grid, reach);
+    }
     add_crossings(s, vertices.len(), added)?;
     if s.crossings.is_empty() {
         s.fragments.clear();
@@ -223,7 +229,12 @@ fn find_crossings(s: &mut Scratch, lo: [f64; 2], hi: [f64; 2], grid: SnapGrid, r
             for &j in &list[k + 1..] {
                 let f = edges[j as usize];
                 let (c, d) = (hot[f.a as usize], hot[f.b as usize]);
-                if crosses(point(a), point(b), point(c), point(d)) {
+                // (boxes first: in a crowded cell most pairs lie apart)
+                let apart = a[0].max(b[0]) < c[0].min(d[0])
+                    || c[0].max(d[0]) < a[0].min(b[0])
+                    || a[1].max(b[1]) < c[1].min(d[1])
+                    || c[1].max(d[1]) < a[1].min(b[1]);
+                if !apart && crosses(point(a), point(b), point(c), point(d)) {
                     pairs.push((i.min(j), i.max(j)));
                 }
             }

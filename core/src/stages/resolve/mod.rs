@@ -429,7 +429,26 @@ mod tests {
             let mut s = Scratch::default();
             let mut added = Vec::new();
             let grid = SnapGrid { f32: false };
-            resolve(&mut s, &vertices, &starts, rule, grid, &mut added).unwrap();
+            resolve(&mut s, &vertices, &starts, rule, grid, false, &mut added).unwrap();
+            if s.crossings.is_empty() {
+                // without crossings, skipping the search (as after strict mode's check)
+                // changes nothing
+                let mut skipped = Scratch::default();
+                resolve(
+                    &mut skipped,
+                    &vertices,
+                    &starts,
+                    rule,
+                    grid,
+                    true,
+                    &mut Vec::new(),
+                )
+                .unwrap();
+                assert_eq!(
+                    (&skipped.rings, &skipped.ring_starts),
+                    (&s.rings, &s.ring_starts)
+                );
+            }
             let mut twice = 0.0;
             for (i, &start) in s.ring_starts.iter().enumerate() {
                 let end = s.ring_starts.get(i + 1).copied().unwrap_or(s.rings.len());
@@ -520,6 +539,7 @@ mod tests {
                 starts,
                 FillRule::EvenOdd,
                 grid,
+                false,
                 &mut Vec::new(),
             )
             .unwrap();
@@ -538,6 +558,7 @@ mod tests {
             &[0],
             FillRule::NonZero,
             grid,
+            false,
             &mut Vec::new(),
         );
         assert_eq!(err, Err(Error::CoordinateRange { vertex: 2 }));
@@ -548,6 +569,7 @@ mod tests {
             &[0],
             FillRule::NonZero,
             grid,
+            false,
             &mut Vec::new(),
         );
         assert_eq!(err, Err(Error::CoordinateRange { vertex: 1 }));

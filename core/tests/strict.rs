@@ -317,3 +317,18 @@ fn a_lobe_inside_its_ring_turning_the_same_way_is_refused() {
         }
     }
 }
+
+#[test]
+fn a_refused_call_leaves_no_triangles_behind() {
+    let square = [[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]];
+    let bow_tie = [[0.0, 0.0], [4.0, 4.0], [4.0, 0.0], [0.0, 4.0]];
+    for strategy in [Strategy::Fast, Strategy::Quality, Strategy::Seidel] {
+        let mut tri = Triangulator::<f64>::new();
+        let mut out = Vec::new();
+        let opts = strict(strategy);
+        tri.triangulate(&square, &[0], &opts, &mut out).unwrap();
+        assert_eq!(out.len(), 2, "{strategy:?}");
+        assert!(tri.triangulate(&bow_tie, &[0], &opts, &mut out).is_err());
+        assert!(out.is_empty(), "{strategy:?}: {out:?}");
+    }
+}

@@ -35,6 +35,8 @@ impl Worker {
         out: &mut Vec<[u32; 3]>,
     ) -> Result<lenient::Outcome, Error> {
         let (cx, stages, reruns) = (&mut self.cx, &mut self.stages, &mut self.reruns);
+        // (a refused call leaves no triangles of an earlier one behind)
+        out.clear();
         cx.added.clear();
         let mut fill_rule = options.fill_rule;
         if options.strategy == crate::Strategy::Seidel && fill_rule.is_none() {

@@ -112,6 +112,20 @@ impl Grid {
         self.row(p[1]) * self.nx + self.col(p[0])
     }
 
+    /// Calls `f` with every cell the closed box `lo`–`hi` may meet (widened by a cell each
+    /// way, far more than rounding), each once.
+    pub(crate) fn cells_in(&self, lo: P, hi: P, mut f: impl FnMut(usize)) {
+        let c0 = self.col(lo[0]).saturating_sub(1);
+        let c1 = (self.col(hi[0]) + 1).min(self.nx - 1);
+        let r0 = self.row(lo[1]).saturating_sub(1);
+        let r1 = (self.row(hi[1]) + 1).min(self.ny - 1);
+        for row in r0..=r1 {
+            for col in c0..=c1 {
+                f(row * self.nx + col);
+            }
+        }
+    }
+
     /// Calls `f` with every cell the closed segment `a b` may meet (a superset of those it
     /// meets, each once).
     pub(crate) fn cells_along(&self, a: P, b: P, mut f: impl FnMut(usize)) {
@@ -261,6 +275,19 @@ impl SegmentIndex {
         });
     }
 
+    /// Calls `f` once with every segment that may meet the box `lo`–`hi`. `stamps` must
+    /// cover the indexed segments.
+    pub(crate) fn near_box(&self, lo: P, hi: P, stamps: &mut Stamps, mut f: impl FnMut(usize)) {
+        stamps.next();
+        self.grid.cells_in(lo, hi, |c| {
+            for &s in self.buckets.get(c) {
+                if stamps.first_visit(s as usize) {
+                    f(s as usize);
+                }
+            }
+        });
+    }
+
     /// The axis direction in which a ray from a point in the box `lo`–`hi` leaves the grid
     /// through the fewest cells.
     pub(crate) fn shortest_ray(&self, lo: P, hi: P) -> Ray {
@@ -390,6 +417,41 @@ pub(crate) fn bbox_of(points: impl IntoIterator<Item = P>) -> [f64; 4] {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Every segment passing through a box is among those `near_box` reports.
+    #[test]
+    fn near_box_finds_the_segments_through_the_box() {
+        let segs: Vec<(P, P)> = (0..200)
+            .map(|k| {
+                let t = f64::from(k) * 0.05;
+                ([t, 0.0], [10.0 - t, 10.0])
+            })
+            .collect();
+        let index = SegmentIndex::new(&segs, [0.0, 0.0, 10.0, 10.0]);
+        let mut stamps = Stamps::new(segs.len());
+        for (lo, hi) in [
+            ([4.9, 4.9], [5.1, 5.1]),
+            ([0.0, 0.0], [0.2, 0.2]),
+            ([9.0, 3.0], [9.5, 3.5]),
+        ] {
+            let mut got = Vec::new();
+            index.near_box(lo, hi, &mut stamps, |i| got.push(i));
+            // each reported once
+            let mut once = got.clone();
+            once.sort_unstable();
+            once.dedup();
+            assert_eq!(once.len(), got.len());
+            for (i, &(a, b)) in segs.iter().enumerate() {
+                // the segment's points in the box, by dense sampling
+                let inside = (0..=1000).any(|k| {
+                    let t = f64::from(k) / 1000.0;
+                    let p = [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])];
+                    (lo[0]..=hi[0]).contains(&p[0]) && (lo[1]..=hi[1]).contains(&p[1])
+                });
+                assert!(!inside || got.contains(&i), "segment {i} in {lo:?}–{hi:?}");
+            }
+        }
+    }
 
     /// Brute force: the cells whose closed box the segment meets, by dense sampling.
     #[test]

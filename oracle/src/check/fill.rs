@@ -53,7 +53,7 @@ use super::{Check, Failures, Verdict};
 use crate::exact::{
     cross_properly, orient, winding_step, Exact, Probe, MAX_COORDINATE, MIN_COORDINATE, P,
 };
-use crate::grid::{bbox_of, Buckets, SegmentIndex, Stamps};
+use crate::grid::{bbox_of, SegmentIndex, Stamps};
 use crate::metrics;
 
 /// Above this many non-vertical edges, [`fill_area`] computes in `f64`.
@@ -600,160 +600,6 @@ fn rational(f: f64) -> BigRational {
 // A grid for candidates
 // ------------------------------------------------------------------------------------------
 
-/// Cells are at least this many ulps of the largest coordinate wide, so rounding in cell
-/// arithmetic stays far below a cell.
-const MIN_CELL_ULPS: f64 = 256.0;
-
-/// A uniform grid of `nx × ny` cells. Cells only narrow down candidates for exact tests,
-/// so a shape is filed under a superset of the cells it meets: cell indices are monotone
-/// in the coordinates, and each column's rows are found over the column widened by a
-/// quarter cell each way and widened by one row, far more than the rounding.
-struct Cells {
-    ox: f64,
-    oy: f64,
-    w: f64,
-    h: f64,
-    nx: usize,
-    ny: usize,
-}
-
-impl Cells {
-    fn new(bbox: [f64; 4], target: usize) -> Cells {
-        let target = target.max(1) as f64;
-        let (width, height) = ((bbox[2] - bbox[0]).max(0.0), (bbox[3] - bbox[1]).max(0.0));
-        let magnitude = bbox.iter().fold(0.0, |m: f64, v| m.max(v.abs()));
-        let min_cell = (magnitude * f64::EPSILON * MIN_CELL_ULPS).max(f64::MIN_POSITIVE);
-        let most = |span: f64| {
-            let n = (span / min_cell).floor();
-            if n.is_finite() && n >= 1.0 {
-                n.min(target)
-            } else {
-                1.0
-            }
-        };
-        let (nx, ny) = if width > 0.0 && height > 0.0 {
-            let side = (width * height / target).sqrt();
-            ((width / side).ceil(), (height / side).ceil())
-        } else if width > 0.0 {
-            (target, 1.0)
-        } else {
-            (1.0, target)
-        };
-        let (nx, ny) = (
-            (nx.clamp(1.0, most(width)) as usize).max(1),
-            (ny.clamp(1.0, most(height)) as usize).max(1),
-        );
-        Cells {
-            ox: bbox[0],
-            oy: bbox[1],
-            w: if width > 0.0 { width / nx as f64 } else { 1.0 },
-            h: if height > 0.0 {
-                height / ny as f64
-            } else {
-                1.0
-            },
-            nx,
-            ny,
-        }
-    }
-
-    fn len(&self) -> usize {
-        self.nx * self.ny
-    }
-
-    fn axis(v: f64, origin: f64, size: f64, n: usize) -> usize {
-        let t = ((v - origin) / size).floor();
-        if t.is_nan() {
-            0
-        } else {
-            (t.max(0.0) as usize).min(n - 1)
-        }
-    }
-
-    fn col(&self, x: f64) -> usize {
-        Self::axis(x, self.ox, self.w, self.nx)
-    }
-
-    fn row(&self, y: f64) -> usize {
-        Self::axis(y, self.oy, self.h, self.ny)
-    }
-
-    /// Calls `f` with every cell the convex polygon `poly` (a segment or a triangle) may
-    /// meet, each once.
-    fn cover(&self, poly: &[P], f: &mut dyn FnMut(usize)) {
-        let xs = poly.iter().map(|p| p[0]);
-        let ys = poly.iter().map(|p| p[1]);
-        let (xmin, xmax) = (
-            xs.clone().fold(f64::INFINITY, f64::min),
-            xs.fold(f64::NEG_INFINITY, f64::max),
-        );
-        let (ymin, ymax) = (
-            ys.clone().fold(f64::INFINITY, f64::min),
-            ys.fold(f64::NEG_INFINITY, f64::max),
-        );
-        let (c0, c1) = (self.col(xmin), self.col(xmax));
-        if c0 == c1 {
-            for r in self.row(ymin)..=self.row(ymax) {
-                f(r * self.nx + c0);
-            }
-            return;
-        }
-        let k = poly.len();
-        let edges = if k == 2 { 1 } else { k };
-        for c in c0..=c1 {
-            let xl = xmin.max(self.ox + (c as f64 - 0.25) * self.w);
-            let xr = xmax.min(self.ox + (c as f64 + 1.25) * self.w);
-            let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-            for e in 0..edges {
-                let (p, q) = (poly[e], poly[(e + 1) % k]);
-                let (p, q) = if p[0] <= q[0] { (p, q) } else { (q, p) };
-                let (el, er) = (xl.max(p[0]), xr.min(q[0]));
-                if el > er {
-                    continue;
-                }
-                let (ylo, yhi) = (p[1].min(q[1]), p[1].max(q[1]));
-                if p[0] == q[0] {
-                    lo = lo.min(ylo);
-                    hi = hi.max(yhi);
-                    continue;
-                }
-                let slope = (q[1] - p[1]) / (q[0] - p[0]);
-                for x in [el, er] {
-                    let y = p[1] + (x - p[0]) * slope;
-                    let (a, b) = if y.is_finite() {
-                        (y.clamp(ylo, yhi), y.clamp(ylo, yhi))
-                    } else {
-                        (ylo, yhi)
-                    };
-                    lo = lo.min(a);
-                    hi = hi.max(b);
-                }
-            }
-            if lo > hi {
-                (lo, hi) = (ymin, ymax);
-            }
-            let r0 = self.row(lo).saturating_sub(1);
-            let r1 = (self.row(hi) + 1).min(self.ny - 1);
-            for r in r0..=r1 {
-                f(r * self.nx + c);
-            }
-        }
-    }
-
-    /// Calls `f` with every cell the box `p ± r` may meet.
-    fn around(&self, p: P, r: f64, mut f: impl FnMut(usize)) {
-        let c0 = self.col(p[0] - r).saturating_sub(1);
-        let c1 = (self.col(p[0] + r) + 1).min(self.nx - 1);
-        let r0 = self.row(p[1] - r).saturating_sub(1);
-        let r1 = (self.row(p[1] + r) + 1).min(self.ny - 1);
-        for row in r0..=r1 {
-            for col in c0..=c1 {
-                f(row * self.nx + col);
-            }
-        }
-    }
-}
-
 // ------------------------------------------------------------------------------------------
 // overlap
 // ------------------------------------------------------------------------------------------
@@ -1089,45 +935,28 @@ fn sectors(probe: &Probe, east: i64, on: &[(P, P)]) -> Vec<i64> {
 /// Segments near a point, for the rounding excuse.
 struct NearEdges<'a> {
     edges: &'a [(P, P)],
-    cells: Cells,
-    buckets: Buckets,
-    seen: Vec<u32>,
-    now: u32,
+    index: SegmentIndex,
+    stamps: Stamps,
 }
 
 impl<'a> NearEdges<'a> {
     fn new(edges: &'a [(P, P)]) -> NearEdges<'a> {
         let bbox = bbox_of(edges.iter().flat_map(|&(a, b)| [a, b]));
-        let cells = Cells::new(bbox, edges.len());
-        let buckets = Buckets::build(cells.len(), edges.len(), |i, f| {
-            cells.cover(&[edges[i].0, edges[i].1], f);
-        });
         NearEdges {
             edges,
-            cells,
-            buckets,
-            seen: vec![0; edges.len()],
-            now: 0,
+            index: SegmentIndex::new(edges, bbox),
+            stamps: Stamps::new(edges.len()),
         }
     }
 
     /// Whether some edge passes within `r` of `p` (floating point).
     fn within(&mut self, p: P, r: f64) -> bool {
-        self.now = self.now.wrapping_add(1);
-        if self.now == 0 {
-            self.seen.fill(0);
-            self.now = 1;
-        }
         let mut hit = false;
-        let (cells, buckets, edges) = (&self.cells, &self.buckets, self.edges);
-        let (seen, now) = (&mut self.seen, self.now);
-        cells.around(p, r, |c| {
-            for &i in buckets.get(c) {
-                if hit || seen[i as usize] == now {
-                    continue;
-                }
-                seen[i as usize] = now;
-                let (a, b) = edges[i as usize];
+        let edges = self.edges;
+        let (lo, hi) = ([p[0] - r, p[1] - r], [p[0] + r, p[1] + r]);
+        self.index.near_box(lo, hi, &mut self.stamps, |i| {
+            if !hit {
+                let (a, b) = edges[i];
                 hit = point_segment_distance(p, a, b) <= r;
             }
         });
@@ -1737,23 +1566,5 @@ mod tests {
         let mut doubled = tris.clone();
         doubled.push((tris.len(), [at(3, 3), at(5, 3), at(4, 5)]));
         assert!(!overlap(&pts, &doubled).passed);
-    }
-
-    #[test]
-    fn cells_cover_a_thin_triangle() {
-        let cells = Cells::new([0.0, 0.0, 10.0, 10.0], 100);
-        let t = [[0.0, 0.0], [10.0, 9.0], [10.0, 10.0]];
-        let mut got = Vec::new();
-        cells.cover(&t, &mut |c| got.push(c));
-        for k in 0..=1000 {
-            let s = k as f64 / 1000.0;
-            for u in [0.0, 0.5, 1.0] {
-                // points of the triangle: along the long edges and between them
-                let x = 10.0 * s;
-                let y = 9.0 * s + u * s;
-                let c = cells.row(y) * cells.nx + cells.col(x);
-                assert!(got.contains(&c), "{x} {y}");
-            }
-        }
     }
 }

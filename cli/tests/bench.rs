@@ -1,21 +1,17 @@
 //! `polytri bench` end to end: the tables' shape on small inputs, never their timings.
 
+mod common;
+
 use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use serde_json::Value;
 
+use common::scratch;
+
 fn fixture(name: &str) -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(format!("../corpus/earcut/fixtures/{name}.json"))
-}
-
-/// A fresh directory for one test, so tests running in parallel never share files.
-fn scratch(test: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("polytri-cli-bench-{}-{test}", std::process::id()));
-    let _ = fs::remove_dir_all(&dir);
-    fs::create_dir_all(&dir).expect("create scratch directory");
-    dir
 }
 
 /// Runs `polytri bench --quick ARGS`; its stdout and stderr, after asserting success.
@@ -140,7 +136,7 @@ fn check_column_times_the_check_alone_and_is_no_peer() {
 
 #[test]
 fn check_column_refuses_what_strict_mode_refuses() {
-    let dir = scratch("bow-tie");
+    let dir = scratch("bench", "bow-tie");
     let bow_tie = dir.join("bow_tie.json");
     fs::write(&bow_tie, "[[[0,0],[4,4],[4,0],[0,4]]]").expect("write input");
     let (table, stderr) = run(&[
@@ -198,7 +194,7 @@ fn per_second_markdown_is_the_papers_table() {
 
 #[test]
 fn quick_scaling_prints_medians_and_exponents_and_plots_each_series() {
-    let dir = scratch("scaling");
+    let dir = scratch("bench", "scaling");
     let (text, stderr) = run(&[
         "--scaling",
         "--sizes",
@@ -300,7 +296,7 @@ fn fast_on(file: &Path, extra: &[&str]) -> (Value, u64, Option<u64>) {
 
 #[test]
 fn nesting_and_merge_say_how_rings_make_polygons() {
-    let dir = scratch("nesting");
+    let dir = scratch("bench", "nesting");
     let file = dir.join("two_squares.json");
     fs::write(&file, SQUARE_THEN_SQUARE_AROUND_IT).expect("write input");
     // each polygon on its own, whatever the nesting: two squares, two triangles each
@@ -323,7 +319,7 @@ fn nesting_and_merge_say_how_rings_make_polygons() {
 
 #[test]
 fn auto_nesting_finds_the_outer_ring_of_a_polygon_listed_second() {
-    let dir = scratch("hole-first");
+    let dir = scratch("bench", "hole-first");
     let file = dir.join("hole_first.json");
     fs::write(
         &file,

@@ -1,32 +1,13 @@
 //! `polytri check` end to end: the built binary judging results of `polytri triangulate`.
 
+mod common;
+
 use std::fs;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
 
 use serde_json::Value;
 
-/// A fresh directory for one test, so tests running in parallel never share files.
-fn scratch(test: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("polytri-cli-check-{}-{test}", std::process::id()));
-    // Left over from an earlier run with the same pid: start clean.
-    let _ = fs::remove_dir_all(&dir);
-    fs::create_dir_all(&dir).expect("create scratch directory");
-    dir
-}
-
-fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
-    let path = dir.join(name);
-    fs::write(&path, text).expect("write fixture");
-    path
-}
-
-fn polytri(args: &[&Path]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_polytri"))
-        .args(args)
-        .output()
-        .expect("run polytri")
-}
+use common::{polytri, scratch, write};
 
 fn path(s: &str) -> &Path {
     Path::new(s)
@@ -65,7 +46,7 @@ fn triangulated_text(dir: &Path, text: &str) -> (PathBuf, PathBuf) {
 
 #[test]
 fn accepts_what_triangulate_wrote() {
-    let dir = scratch("accepts");
+    let dir = scratch("check", "accepts");
     let (input, result) = triangulated(&dir);
     let out = polytri(&[path("check"), &input, &result]);
     let stderr = String::from_utf8_lossy(&out.stderr);
@@ -85,7 +66,7 @@ fn accepts_what_triangulate_wrote() {
 
 #[test]
 fn rejects_a_broken_result_naming_the_check() {
-    let dir = scratch("rejects");
+    let dir = scratch("check", "rejects");
     let (input, result) = triangulated(&dir);
     let mut json: Value =
         serde_json::from_str(&fs::read_to_string(&result).expect("read")).expect("JSON");
@@ -108,7 +89,7 @@ fn rejects_a_broken_result_naming_the_check() {
 
 #[test]
 fn says_when_the_result_is_of_another_input() {
-    let dir = scratch("mismatch");
+    let dir = scratch("check", "mismatch");
     let (input, result) = triangulated(&dir);
     let other = write(&dir, "other.json", "[[[0,0],[1,0],[0,1]]]");
     let out = polytri(&[path("check"), &other, &result]);
@@ -128,7 +109,7 @@ fn says_when_the_result_is_of_another_input() {
 
 #[test]
 fn each_polygon_is_judged_on_its_own() {
-    let dir = scratch("per_polygon");
+    let dir = scratch("check", "per_polygon");
     // two overlapping squares, as neighbouring features of a layer often are
     let (input, result) = triangulated_text(
         &dir,
@@ -184,7 +165,7 @@ fn each_polygon_is_judged_on_its_own() {
 /// first ring is outer, every other ring a hole in it.
 #[test]
 fn merged_first_outer_means_the_same_in_both_commands() {
-    let dir = scratch("merged-first-outer");
+    let dir = scratch("check", "merged-first-outer");
     // two polygons, the second's square inside the first: merged, a hole
     let file = write(
         &dir,

@@ -1,35 +1,17 @@
 //! `polytri triangulate --fill-rule`: crossing rings read by their winding numbers, with the
 //! vertices added where edges cross in every output format.
 
+mod common;
+
 use std::fs;
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::path::Path;
 
 use serde_json::Value;
 
+use common::{polytri, scratch, write};
+
 /// The pentagram {5/2}, counter-clockwise: every second corner of a regular pentagon.
 const PENTAGRAM: &str = "[[[0, 100], [-59, -81], [95, 31], [-95, 31], [59, -81]]]";
-
-/// A fresh directory for one test.
-fn scratch(test: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("polytri-cli-fill-{}-{test}", std::process::id()));
-    let _ = fs::remove_dir_all(&dir);
-    fs::create_dir_all(&dir).expect("create scratch directory");
-    dir
-}
-
-fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
-    let path = dir.join(name);
-    fs::write(&path, text).expect("write fixture");
-    path
-}
-
-fn polytri(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_polytri"))
-        .args(args)
-        .output()
-        .expect("run polytri")
-}
 
 /// Runs `polytri triangulate FILE EXTRA…`, expects success, returns stdout and stderr.
 fn triangulate(file: &Path, extra: &[&str]) -> (String, String) {
@@ -66,7 +48,7 @@ fn indices(json: &Value) -> (Vec<u64>, Vec<(u64, [u64; 2])>) {
 
 #[test]
 fn pentagram_even_odd_and_nonzero() {
-    let dir = scratch("pentagram");
+    let dir = scratch("fill", "pentagram");
     let file = write(&dir, "pentagram.json", PENTAGRAM);
     // even-odd: the five points (the centre winds twice); nonzero: the whole star
     for (rule, triangles) in [("even-odd", 5), ("nonzero", 8)] {
@@ -112,7 +94,7 @@ fn pentagram_even_odd_and_nonzero() {
 
 #[test]
 fn without_a_fill_rule_the_json_is_unchanged_and_the_pentagram_refused() {
-    let dir = scratch("unchanged");
+    let dir = scratch("fill", "unchanged");
     let square = write(&dir, "square.json", "[[[0, 0], [2, 0], [2, 2], [0, 2]]]");
     let out = json(&square, &[]);
     assert!(out.get("added").is_none(), "{out}");
@@ -129,7 +111,7 @@ fn without_a_fill_rule_the_json_is_unchanged_and_the_pentagram_refused() {
 
 #[test]
 fn added_vertices_follow_all_the_file_s_vertices_across_polygons() {
-    let dir = scratch("pieces");
+    let dir = scratch("fill", "pieces");
     // shapes JSON: the pentagram, then a bow tie far away (its crossing at (501, 1))
     let shapes = format!("[{PENTAGRAM}, [[[500, 0], [502, 2], [502, 0], [500, 2]]]]");
     let file = write(&dir, "shapes.json", &shapes);
@@ -170,7 +152,7 @@ fn added_vertices_follow_all_the_file_s_vertices_across_polygons() {
 
 #[test]
 fn svg_obj_and_geojson_use_the_added_vertices() {
-    let dir = scratch("formats");
+    let dir = scratch("fill", "formats");
     let file = write(&dir, "pentagram.json", PENTAGRAM);
     let (svg, _) = triangulate(&file, &["--fill-rule", "even-odd", "--format", "svg"]);
     let dots = svg
@@ -233,7 +215,7 @@ fn usage_help_and_conflicts() {
     }
     assert!(help.contains("winding number"), "{help}");
 
-    let dir = scratch("usage");
+    let dir = scratch("fill", "usage");
     let file = write(&dir, "pentagram.json", PENTAGRAM);
     let path = file.to_str().expect("utf-8");
     // --lenient does not apply with a fill rule; an unknown rule is bad usage
@@ -279,7 +261,7 @@ fn usage_help_and_conflicts() {
 /// merged, and rejects it under the other rule or with a triangle taken away.
 #[test]
 fn check_judges_fill_rule_results() {
-    let dir = scratch("check");
+    let dir = scratch("fill", "check");
     let shapes = format!("[{PENTAGRAM}, [[[500, 0], [502, 2], [502, 0], [500, 2]]]]");
     let file = write(&dir, "shapes.json", &shapes);
     let path = |p: &Path| p.to_str().expect("utf-8 path").to_owned();

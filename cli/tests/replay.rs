@@ -1,28 +1,14 @@
 //! `polytri replay` and `polytri promote` end to end: the built binary on the corpus and on
 //! scratch folders.
 
+mod common;
+
 use std::fs;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
 
 use polytri_oracle::Case;
 
-/// A fresh directory for one test, so tests running in parallel never share files.
-fn scratch(test: &str) -> PathBuf {
-    let dir =
-        std::env::temp_dir().join(format!("polytri-cli-replay-{}-{test}", std::process::id()));
-    // Left over from an earlier run with the same pid: start clean.
-    let _ = fs::remove_dir_all(&dir);
-    fs::create_dir_all(&dir).expect("create scratch directory");
-    dir
-}
-
-fn polytri(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_polytri"))
-        .args(args)
-        .output()
-        .expect("run polytri")
-}
+use common::{polytri, scratch};
 
 fn corpus() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../corpus")
@@ -92,7 +78,7 @@ fn replays_the_papers_figures() {
 
 #[test]
 fn a_broken_case_fails_the_replay() {
-    let dir = scratch("broken").join("cases");
+    let dir = scratch("replay", "broken").join("cases");
     fs::create_dir_all(&dir).unwrap();
     fs::write(dir.join("square_with_square_hole.json"), SQUARE_WITH_HOLE).unwrap();
     // Wrong count.
@@ -138,7 +124,7 @@ fn a_broken_case_fails_the_replay() {
 
 #[test]
 fn a_crossing_input_said_to_be_valid_fails_the_replay() {
-    let dir = scratch("crossing").join("cases");
+    let dir = scratch("replay", "crossing").join("cases");
     fs::create_dir_all(&dir).unwrap();
     // A bow tie: strict refuses it (right for an invalid input), but the case says the
     // input is valid.
@@ -184,7 +170,7 @@ fn verdicts<'a>(stdout: &'a str, case: &str) -> Vec<&'a str> {
 
 #[test]
 fn nesting_applies_to_rings_files_not_to_cases() {
-    let dir = scratch("nesting").join("cases");
+    let dir = scratch("replay", "nesting").join("cases");
     fs::create_dir_all(&dir).unwrap();
     fs::write(dir.join("hole_first.json"), HOLE_FIRST).unwrap();
     // the same rings as a case, which says its nesting itself
@@ -217,7 +203,7 @@ fn nesting_applies_to_rings_files_not_to_cases() {
 
 #[test]
 fn merge_takes_the_rings_of_a_shapes_file_as_one_set() {
-    let dir = scratch("merge").join("cases");
+    let dir = scratch("replay", "merge").join("cases");
     fs::create_dir_all(&dir).unwrap();
     // two polygons, the second inside the first
     let shapes = "[[[[0,0],[10,0],[10,10],[0,10]]], [[[3,3],[7,3],[7,7],[3,7]]]]";
@@ -240,7 +226,7 @@ fn merge_takes_the_rings_of_a_shapes_file_as_one_set() {
 
 #[test]
 fn promote_round_trips_a_case() {
-    let dir = scratch("promote");
+    let dir = scratch("replay", "promote");
     let found = dir.join("found.json");
     fs::write(&found, SQUARE_WITH_HOLE).unwrap();
     let to = dir.join("cases");
@@ -292,7 +278,7 @@ fn promote_round_trips_a_case() {
 
 #[test]
 fn promote_refuses_what_is_not_a_case() {
-    let dir = scratch("refuse");
+    let dir = scratch("replay", "refuse");
     let junk = dir.join("junk.json");
     fs::write(&junk, "[1, 2, 3]").unwrap();
     let out = polytri(&["promote", s(&junk), "--to", s(&dir.join("cases"))]);
@@ -315,7 +301,7 @@ fn promote_refuses_what_is_not_a_case() {
 
 #[test]
 fn promote_decodes_a_fuzz_input() {
-    let dir = scratch("fuzz");
+    let dir = scratch("replay", "fuzz");
     let raw = dir.join("crash-0123");
     // raw_rings' decoding: flags 2 (f64, small integer coordinates, sensible ring starts),
     // one ring (its size byte ignored), then the points (0, 0), (8, 0), (8, 8), (0, 8).

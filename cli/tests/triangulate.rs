@@ -1,32 +1,13 @@
 //! `polytri triangulate` end to end: the built binary on small files written per test.
 
+mod common;
+
 use std::fs;
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::path::Path;
 
 use serde_json::Value;
 
-/// A fresh directory for one test, so tests running in parallel never share files.
-fn scratch(test: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("polytri-cli-{}-{test}", std::process::id()));
-    // Left over from an earlier run with the same pid: start clean.
-    let _ = fs::remove_dir_all(&dir);
-    fs::create_dir_all(&dir).expect("create scratch directory");
-    dir
-}
-
-fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
-    let path = dir.join(name);
-    fs::write(&path, text).expect("write fixture");
-    path
-}
-
-fn polytri(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_polytri"))
-        .args(args)
-        .output()
-        .expect("run polytri")
-}
+use common::{polytri, scratch, write};
 
 /// Runs `polytri triangulate FILE EXTRA…`, expects success and returns the result JSON
 /// and stderr.
@@ -87,7 +68,7 @@ const SQUARE_WITH_HOLE: &str = "[[[0,0],[10,0],[10,10],[0,10]],[[3,3],[3,7],[7,7
 
 #[test]
 fn rings_json_square() {
-    let dir = scratch("rings_json_square");
+    let dir = scratch("triangulate", "rings_json_square");
     let (json, stderr) = triangulate(&write(&dir, "square.json", SQUARE), &[]);
     assert_eq!(
         vertices(&json),
@@ -112,7 +93,7 @@ fn rings_json_square() {
 
 #[test]
 fn rings_json_square_with_hole() {
-    let dir = scratch("rings_json_square_with_hole");
+    let dir = scratch("triangulate", "rings_json_square_with_hole");
     let file = write(&dir, "hole.json", SQUARE_WITH_HOLE);
     for strategy in ["fast", "quality"] {
         for nesting in ["auto", "first-outer"] {
@@ -127,7 +108,7 @@ fn rings_json_square_with_hole() {
 
 #[test]
 fn closing_point_is_dropped() {
-    let dir = scratch("closing_point_is_dropped");
+    let dir = scratch("triangulate", "closing_point_is_dropped");
     let file = write(&dir, "closed.json", "[[[0,0],[10,0],[10,10],[0,10],[0,0]]]");
     let (json, _) = triangulate(&file, &[]);
     assert_eq!(vertices(&json).len(), 4, "closing point dropped");
@@ -137,7 +118,7 @@ fn closing_point_is_dropped() {
 
 #[test]
 fn extra_coordinates_are_ignored() {
-    let dir = scratch("extra_coordinates_are_ignored");
+    let dir = scratch("triangulate", "extra_coordinates_are_ignored");
     let file = write(&dir, "z.json", "[[[0,0,5],[10,0,5],[10,10,5],[0,10,5]]]");
     let (json, _) = triangulate(&file, &[]);
     assert_eq!(vertices(&json)[2], [10.0, 10.0]);
@@ -148,7 +129,7 @@ fn extra_coordinates_are_ignored() {
 /// vertices, whether triangulated in one call (auto) or one call per polygon (offsets).
 #[test]
 fn shapes_json_triangulates_every_polygon_with_offsets() {
-    let dir = scratch("shapes_json_offsets");
+    let dir = scratch("triangulate", "shapes_json_offsets");
     let text = format!(
         "[{SQUARE_WITH_HOLE}, [[[20,0],[30,0],[30,10],[20,10]]], \
          [[[40,0],[50,0],[50,10],[40,10]],[[43,3],[43,7],[47,7],[47,3]]]]"
@@ -187,7 +168,7 @@ fn shapes_json_triangulates_every_polygon_with_offsets() {
 
 #[test]
 fn geojson_collections_and_skipped_geometries() {
-    let dir = scratch("geojson_collections");
+    let dir = scratch("triangulate", "geojson_collections");
     let text = r#"{"type": "FeatureCollection", "features": [
         {"type": "Feature", "properties": {"name": "hole"}, "geometry":
             {"type": "Polygon", "coordinates": [
@@ -218,7 +199,7 @@ fn geojson_collections_and_skipped_geometries() {
 
 #[test]
 fn wkt_by_extension_and_by_content() {
-    let dir = scratch("wkt");
+    let dir = scratch("triangulate", "wkt");
     let text = "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (3 3, 3 7, 7 7, 7 3, 3 3))";
     let (json, _) = triangulate(&write(&dir, "hole.wkt", text), &[]);
     assert_eq!(vertices(&json).len(), 8);
@@ -237,7 +218,7 @@ fn wkt_by_extension_and_by_content() {
 
 #[test]
 fn f32_precision_triangulates_and_keeps_the_parsed_vertices() {
-    let dir = scratch("f32");
+    let dir = scratch("triangulate", "f32");
     let file = write(
         &dir,
         "hole.json",
@@ -259,7 +240,7 @@ fn f32_precision_triangulates_and_keeps_the_parsed_vertices() {
 
 #[test]
 fn svg_output_to_a_file_and_to_stdout() {
-    let dir = scratch("svg");
+    let dir = scratch("triangulate", "svg");
     let file = write(&dir, "hole.json", SQUARE_WITH_HOLE);
     let svg = dir.join("out.svg");
     let out = polytri(&[
@@ -318,7 +299,7 @@ fn shared_fixture_building_as_svg() {
         eprintln!("skipped: {} is not here", fixture.display());
         return;
     }
-    let dir = scratch("building");
+    let dir = scratch("triangulate", "building");
     let svg = dir.join("building.svg");
     let out = polytri(&[
         "triangulate",
@@ -343,7 +324,7 @@ fn shared_fixture_building_as_svg() {
 
 #[test]
 fn missing_file_is_one_line() {
-    let dir = scratch("missing");
+    let dir = scratch("triangulate", "missing");
     let message = refused(&dir.join("no-such-file.json"), &[]);
     assert!(
         message.contains("no-such-file.json: cannot read"),
@@ -353,7 +334,7 @@ fn missing_file_is_one_line() {
 
 #[test]
 fn malformed_json_names_line_and_column() {
-    let dir = scratch("malformed");
+    let dir = scratch("triangulate", "malformed");
     let message = refused(&write(&dir, "bad.json", "[[[0,0],\n[1,0],,[1,1]]]"), &[]);
     assert!(
         message.contains("bad.json: invalid JSON") && message.contains("line 2 column"),
@@ -379,7 +360,7 @@ fn malformed_json_names_line_and_column() {
 
 #[test]
 fn nan_coordinates_are_refused() {
-    let dir = scratch("nan");
+    let dir = scratch("triangulate", "nan");
     let message = refused(
         &write(&dir, "nan.wkt", "POLYGON ((0 0, 10 0, nan 10, 0 0))"),
         &[],
@@ -402,7 +383,7 @@ fn nan_coordinates_are_refused() {
 
 #[test]
 fn bow_tie_is_refused_strictly_and_repaired_leniently() {
-    let dir = scratch("bow_tie");
+    let dir = scratch("triangulate", "bow_tie");
     let file = write(&dir, "bowtie.json", "[[[0,0],[10,10],[10,0],[0,10]]]");
     let message = refused(&file, &[]);
     assert!(
@@ -418,7 +399,7 @@ fn bow_tie_is_refused_strictly_and_repaired_leniently() {
 
 #[test]
 fn misplaced_hole_names_polygon_and_ring() {
-    let dir = scratch("misplaced_hole");
+    let dir = scratch("triangulate", "misplaced_hole");
     let text = format!("[{SQUARE}, [[[20,0],[30,0],[30,10],[20,10]], [[40,0],[41,0],[41,1]]]]");
     let file = write(&dir, "shapes.json", &text);
     let message = refused(&file, &["--nesting", "first-outer"]);
@@ -429,7 +410,7 @@ fn misplaced_hole_names_polygon_and_ring() {
 
 #[test]
 fn unwritable_output_is_one_line() {
-    let dir = scratch("unwritable");
+    let dir = scratch("triangulate", "unwritable");
     let file = write(&dir, "square.json", SQUARE);
     let out = polytri(&[
         "triangulate",
@@ -457,7 +438,7 @@ fn bad_usage_exits_2() {
 /// Odd but readable inputs: exit 0 or 1, never a panic or a crash.
 #[test]
 fn odd_inputs_never_panic() {
-    let dir = scratch("odd");
+    let dir = scratch("triangulate", "odd");
     let cases = [
         "",
         "[]",
@@ -514,7 +495,7 @@ fn threads_do_not_change_the_result() {
     assert!(triangles(&runs[0]).len() > 1000);
     assert!(runs.iter().all(|r| r == &runs[0]));
     // and an error names the same polygon whichever thread met it
-    let dir = scratch("threads");
+    let dir = scratch("triangulate", "threads");
     let text = format!(
         "[{SQUARE}, {SQUARE}, [[[20,0],[30,0],[30,10],[20,10]], [[40,0],[41,0],[41,1]]], {SQUARE}]"
     );
@@ -544,7 +525,7 @@ fn collection(features: &[(&str, &str, &str)]) -> String {
 
 #[test]
 fn each_polygon_on_its_own_unless_merged() {
-    let dir = scratch("per_polygon");
+    let dir = scratch("triangulate", "per_polygon");
     // two overlapping squares, as neighbouring counties of a layer often are
     let text = collection(&[
         ("a", "West", "[[[0,0],[10,0],[10,10],[0,10],[0,0]]]"),
@@ -564,7 +545,7 @@ fn each_polygon_on_its_own_unless_merged() {
 
 #[test]
 fn keep_going_writes_the_valid_features_as_geojson() {
-    let dir = scratch("keep_going");
+    let dir = scratch("triangulate", "keep_going");
     let text = collection(&[
         ("a", "First", "[[[0,0],[10,0],[10,10],[0,10],[0,0]]]"),
         ("bad", "Bow tie", "[[[20,0],[30,10],[30,0],[20,10],[20,0]]]"),
@@ -618,7 +599,7 @@ fn keep_going_writes_the_valid_features_as_geojson() {
 
 #[test]
 fn per_triangle_features_keep_their_properties() {
-    let dir = scratch("per_triangle");
+    let dir = scratch("triangulate", "per_triangle");
     let text = collection(&[("sq", "Square", "[[[0,0],[10,0],[10,10],[0,10],[0,0]]]")]);
     let file = write(&dir, "one.geojson", &text);
     let (json, _) = triangulate(&file, &["--format", "geojson", "--per-triangle"]);
@@ -632,7 +613,7 @@ fn per_triangle_features_keep_their_properties() {
 
 #[test]
 fn a_wall_in_3d_keeps_its_z_in_json_obj_and_geojson() {
-    let dir = scratch("wall_3d");
+    let dir = scratch("triangulate", "wall_3d");
     // a wall in the plane x = 2, with a window
     let wall = "[[[2,0,0],[2,6,0],[2,6,3],[2,0,3]], [[2,2,1],[2,2,2],[2,4,2],[2,4,1]]]";
     let file = write(&dir, "wall.json", wall);
@@ -685,7 +666,7 @@ fn a_wall_in_3d_keeps_its_z_in_json_obj_and_geojson() {
 fn a_county_layer_by_the_defaults() {
     // the worked example of docs/gis: 254 counties, each triangulated on its own
     let layer = Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/gis/texas-counties.geojson");
-    let dir = scratch("county_layer");
+    let dir = scratch("triangulate", "county_layer");
     let result = dir.join("texas.json");
     let out = polytri(&[
         "triangulate",

@@ -22,7 +22,8 @@ the rest holes), shapes JSON (a list of such polygons), GeoJSON (Polygon, MultiP
 Feature, FeatureCollection, GeometryCollection) and WKT (POLYGON, MULTIPOLYGON, \
 GEOMETRYCOLLECTION; by content or a .wkt name). A polygon whose every point has a third \
 coordinate (rings JSON, GeoJSON, WKT Z) is a planar polygon in 3D: triangulated in its own plane, \
-z kept in the output (JSON, OBJ, GeoJSON); further coordinates are ignored. A \
+z kept in the output (JSON, OBJ, GeoJSON); in a file where some polygons have z, the \
+others lie in the plane z = 0. Further coordinates are ignored. A \
 repeated closing point is dropped, and other geometry types are skipped with a warning.
 
 Output JSON: {\"vertices\": [[x, y], …], \"triangles\": [[a, b, c], …]}, the vertices in \
@@ -515,17 +516,21 @@ fn triangulate_pieces<T: Coord>(
         .collect()
 }
 
-/// The z of every vertex of `layout`, in its order, when every polygon of the file has z
-/// for every point (rings JSON `[x, y, z]`, GeoJSON positions of three numbers).
+/// The z of every vertex of `layout`, in its order, when some polygon of the file has z
+/// (rings JSON `[x, y, z]`, GeoJSON positions of three numbers): each polygon is then
+/// triangulated in its own plane, and a polygon without z lies in the plane z = 0.
 fn flat_z(input: &Input, layout: &Layout) -> Option<Vec<f64>> {
-    if input.z.is_empty() || input.z.len() != input.polygons.len() {
+    if input.z.len() != input.polygons.len() || input.z.iter().all(Option::is_none) {
         return None;
     }
     let mut flat = Vec::with_capacity(layout.vertices.len());
-    for polygon in &input.z {
+    for (polygon, z) in input.polygons.iter().zip(&input.z) {
         // (as `Layout::new`: empty rings left out)
-        for ring in polygon.as_ref()? {
-            flat.extend_from_slice(ring);
+        match z {
+            Some(rings) => rings.iter().for_each(|ring| flat.extend_from_slice(ring)),
+            None => polygon
+                .iter()
+                .for_each(|ring| flat.resize(flat.len() + ring.len(), 0.0)),
         }
     }
     (flat.len() == layout.vertices.len()).then_some(flat)

@@ -660,6 +660,21 @@ fn a_wall_in_3d_keeps_its_z_in_json_obj_and_geojson() {
     let (json, _) = triangulate(&file, &["--format", "geojson"]);
     let first = &json["features"][0]["geometry"]["coordinates"][0][0][0];
     assert_eq!(first.as_array().map(Vec::len), Some(3));
+    // a layer mixing a wall with z and a footprint without: each in its own plane, the
+    // footprint in z = 0
+    let text = collection(&[
+        ("w", "Wall", "[[[2,0,0],[2,6,0],[2,6,3],[2,0,3],[2,0,0]]]"),
+        ("f", "Footprint", "[[[10,0],[14,0],[14,4],[10,4],[10,0]]]"),
+    ]);
+    let file = write(&dir, "mixed.geojson", &text);
+    let (json, stderr) = triangulate(&file, &["--format", "geojson"]);
+    assert!(stderr.contains("4 triangles"), "{stderr}");
+    let polygons = |k: usize| {
+        json["features"][k]["geometry"]["coordinates"]
+            .as_array()
+            .map(Vec::len)
+    };
+    assert_eq!((polygons(0), polygons(1)), (Some(2), Some(2)), "{json}");
 }
 
 #[test]

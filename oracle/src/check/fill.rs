@@ -13,8 +13,8 @@
 //! | `indices`     | every triangle index names an input or added vertex                   |
 //! | `orientation` | every triangle is strictly counter-clockwise (exact)                  |
 //! | `overlap`     | no two triangles' interiors meet (exact)                              |
-//! | `inside`      | the winding number of the input rings at every triangle's centroid is one the rule accepts (exact); with added vertices, a centroid within δ of an input edge is excused |
-//! | `area`        | Σ triangle areas (exact) = the region's area by a slab decomposition: exactly without added vertices, within `2 · δ · (length of the input's edges passing within 2δ of a vertex not their own)` with them |
+//! | `inside`      | the winding number of the input rings at every triangle's centroid is one the rule accepts (exact); where edges cross properly (rounded crossings), a centroid within δ of an input edge is excused |
+//! | `area`        | Σ triangle areas (exact) = the region's area by a slab decomposition: exactly where no edges cross properly, within `2 · δ · (length of the input's edges passing within 2δ of a vertex not their own)` where some do |
 //!
 //! δ is `4 · ulp(M)`, `M` the largest coordinate magnitude of the input, the ulp of `f32`
 //! when every coordinate (input and added) is an `f32` value and of `f64` otherwise: snap
@@ -24,7 +24,7 @@
 //! once; every centroid inside and equal areas then leave room only for a triangle that
 //! straddles the region's boundary with its centroid inside, its excess matched by an
 //! uncovered part of equal area elsewhere (the checks do not compare the triangles'
-//! outline with the region's). With added vertices, the area tolerance also admits
+//! outline with the region's). Where edges cross, the area tolerance also admits
 //! leaving out triangles smaller than it. `overlap` is a sweep in the manner of Shamos and
 //! Hoey, each pair that becomes adjacent tested exactly. A centroid lying exactly on an input
 //! edge has no winding number: the triangle then passes when the rule accepts the
@@ -82,9 +82,10 @@ const MAX_CROSSINGS: usize = 5_000_000;
 /// winds as given, counter-clockwise counting +1).
 ///
 /// `added` are the vertices the triangulator added where edges cross; triangles index
-/// `vertices`, then `added`. Without added vertices the result must be exact; with them,
-/// the `inside` and `area` checks allow for the rounding of the crossings (see the module
-/// docs for δ). Never panics, whatever the arguments hold: a broken input fails the
+/// `vertices`, then `added`. Where no two edges cross properly the result must be exact;
+/// where some do, the `inside` and `area` checks allow for the rounding of the crossings
+/// (see the module docs for δ), even without added vertices: a crossing may round onto
+/// an input vertex. Never panics, whatever the arguments hold: a broken input fails the
 /// `input` check and the checks that need geometry are skipped.
 ///
 /// ```
@@ -410,7 +411,10 @@ fn judge(verdict: &mut Verdict, input: &FillInput, rule: FillRule, good: &[(usiz
     }
     verdict.checks.push(fails.check("orientation"));
     verdict.checks.push(overlap(pts, &ccw));
-    verdict.checks.push(inside(input, rule, good));
+    // Rounding happens only where edges cross properly, and may add no vertex (a crossing
+    // can round onto an input vertex); elsewhere the result must be exact.
+    let rounded = pts.len() > input.inputs || !for_each_crossing(&input.edges, |_, _| false);
+    verdict.checks.push(inside(input, rule, good, rounded));
 
     // area
     let mut twice = Dyadic::default();
@@ -427,12 +431,9 @@ fn judge(verdict: &mut Verdict, input: &FillInput, rule: FillRule, good: &[(usiz
         let covered_f = BigRational::new_raw(covered.0.clone(), covered.1.clone());
         verdict.deviation = polytri::deviation(region.area, covered_f.to_f64().unwrap_or(0.0));
     }
-    verdict.checks.push(area_check(
-        input,
-        &covered,
-        region,
-        pts.len() > input.inputs,
-    ));
+    verdict
+        .checks
+        .push(area_check(input, &covered, region, rounded));
 
     let quality_corners: Vec<[([f64; 2], u32); 3]> = good
         .iter()
@@ -976,9 +977,8 @@ fn point_segment_distance(p: P, a: P, b: P) -> f64 {
 }
 
 /// Every triangle's centroid has a winding number the rule accepts.
-fn inside(input: &FillInput, rule: FillRule, good: &[(usize, [u32; 3])]) -> Check {
+fn inside(input: &FillInput, rule: FillRule, good: &[(usize, [u32; 3])], rounded: bool) -> Check {
     let pts = &input.pts;
-    let rounded = pts.len() > input.inputs;
     let mut windings = Windings::new(input);
     let mut near = rounded.then(|| NearEdges::new(&input.edges));
     // δ plus the rounding of the centroid and of the distance, a few ulps of the magnitude
@@ -1063,25 +1063,37 @@ fn segments_and_crossings(input: &FillInput) -> Result<(Vec<Seg>, Crossings), St
         })
         .collect();
     let ends: Vec<(P, P)> = segs.iter().map(|s| (s.a, s.b)).collect();
-    let bbox = bbox_of(ends.iter().flat_map(|&(a, b)| [a, b]));
-    let index = SegmentIndex::new(&ends, bbox);
-    let mut stamps = Stamps::new(ends.len());
     let mut crossings = Vec::new();
-    let mut too_many = false;
-    for (i, &(a, b)) in ends.iter().enumerate() {
-        index.near_segment(a, b, &mut stamps, |j| {
-            if j > i && !too_many && cross_properly(a, b, ends[j].0, ends[j].1) {
-                crossings.push((i as u32, j as u32));
-                too_many = crossings.len() > MAX_CROSSINGS;
-            }
-        });
-        if too_many {
-            return Err(format!(
-                "more than {MAX_CROSSINGS} crossings between edges: too many for the slab method"
-            ));
-        }
+    let complete = for_each_crossing(&ends, |i, j| {
+        crossings.push((i as u32, j as u32));
+        crossings.len() <= MAX_CROSSINGS
+    });
+    if !complete {
+        return Err(format!(
+            "more than {MAX_CROSSINGS} crossings between edges: too many for the slab method"
+        ));
     }
     Ok((segs, crossings))
+}
+
+/// Calls `f(i, j)` with `i < j` for every pair of `segments` that cross properly, until `f`
+/// returns false; returns whether every pair was seen.
+fn for_each_crossing(segments: &[(P, P)], mut f: impl FnMut(usize, usize) -> bool) -> bool {
+    let bbox = bbox_of(segments.iter().flat_map(|&(a, b)| [a, b]));
+    let index = SegmentIndex::new(segments, bbox);
+    let mut stamps = Stamps::new(segments.len());
+    let mut go_on = true;
+    for (i, &(a, b)) in segments.iter().enumerate() {
+        index.near_segment(a, b, &mut stamps, |j| {
+            if go_on && j > i && cross_properly(a, b, segments[j].0, segments[j].1) {
+                go_on = f(i, j);
+            }
+        });
+        if !go_on {
+            return false;
+        }
+    }
+    true
 }
 
 /// The region's area, exactly when small enough (and `float` is false), else in `f64`.

@@ -116,9 +116,13 @@ pub struct Options {
     /// `true` (lenient): skip the refusal and make the best of any input — always a result,
     /// with a [`Report`](crate::Report) of what was repaired or skipped.
     pub lenient: bool,
-    /// Threads for [`Triangulator::triangulate_many`](crate::Triangulator::triangulate_many):
-    /// 1 (default) runs on the caller's thread, 0 uses every available core. Results do not
-    /// depend on it. Without the crate's `threads` feature, every count runs on one thread.
+    /// Threads for [`Triangulator::triangulate_many`](crate::Triangulator::triangulate_many)
+    /// (inputs spread over them) and for the fast strategy on one polygon of hundreds of
+    /// thousands of vertices (mark-and-cut: ear tests in parallel rounds): 1 (default) runs
+    /// on the caller's thread, 0 uses every available core. Results are the same for every
+    /// count from 2 on; a polygon large enough for mark-and-cut gets other (equally valid)
+    /// triangles with 1. Without the crate's `threads` feature, every count runs on one
+    /// thread.
     pub threads: usize,
     /// `None` (default): the rings are a polygon with holes, read by [`Nesting`], and
     /// crossing edges are refused (strict) or worked round (lenient). `Some(rule)`: the
@@ -161,8 +165,8 @@ impl Options {
         self
     }
 
-    /// Sets the thread count for [`Triangulator::triangulate_many`](crate::Triangulator::triangulate_many):
-    /// 1 (default) sequential, 0 every available core.
+    /// Sets the thread count ([`Options::threads`]): 1 (default) sequential, 0 every
+    /// available core.
     pub const fn with_threads(mut self, threads: usize) -> Self {
         self.threads = threads;
         self

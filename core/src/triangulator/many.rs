@@ -69,6 +69,8 @@ impl Kept {
 #[derive(Debug, Default)]
 pub(super) struct Many {
     outcomes: Vec<Kept>,
+    /// [`Triangulator::set_mark_and_cut_min`]'s size, if set.
+    mark_and_cut_min: Option<usize>,
     #[cfg(feature = "threads")]
     pool: Option<Pool>,
 }
@@ -77,8 +79,43 @@ pub(super) struct Many {
 #[cfg(feature = "threads")]
 #[derive(Debug)]
 struct Pool {
-    threads: rayon::ThreadPool,
+    /// (shared with the clip stage, for mark-and-cut on one large polygon)
+    threads: std::sync::Arc<rayon::ThreadPool>,
     workers: Vec<std::sync::Mutex<Worker>>,
+}
+
+/// The pool of `threads` threads in `slot`, started on first use (or again for another
+/// count); `None` when no pool could be started.
+#[cfg(feature = "threads")]
+fn started(slot: &mut Option<Pool>, threads: usize) -> Option<&Pool> {
+    if slot.as_ref().map(|p| p.workers.len()) != Some(threads) {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .ok()?;
+        let workers = (0..threads).map(|_| Default::default()).collect();
+        *slot = Some(Pool {
+            threads: std::sync::Arc::new(pool),
+            workers,
+        });
+    }
+    slot.as_ref()
+}
+
+/// Gives `worker`'s clip stage `threads` for mark-and-cut when the input (of `vertices`
+/// vertices) has at least `min`, and none otherwise.
+#[cfg(feature = "threads")]
+fn lend(
+    worker: &mut Worker,
+    threads: Option<&std::sync::Arc<rayon::ThreadPool>>,
+    vertices: usize,
+    min: usize,
+) {
+    use crate::stages::clip::Lent;
+    worker.stages.clip.threads = threads.filter(|_| vertices >= min).map(|pool| Lent {
+        pool: pool.clone(),
+        min,
+    });
 }
 
 /// The number of threads `options` asks for: 0 means every available core (asked once:
@@ -95,7 +132,10 @@ impl<T: Coord> Triangulator<T> {
     /// Triangulates many independent inputs, each as [`Triangulator::triangulate`] would:
     /// one entry of `out` and one result per input, in input order. With
     /// [`Options::with_threads`] (and the crate's `threads` feature) the inputs are spread
-    /// over that many threads; the results are the same for every thread count.
+    /// over that many threads (an input large enough for mark-and-cut, see
+    /// [`Options::threads`], is clipped on them too); the results are the same as
+    /// `triangulate` gives each input with the same options, and the same for every thread
+    /// count from 2 on.
     ///
     /// Each input is `(vertices, ring_starts)`; its triangles index its own vertices.
     /// `out` is resized to one entry per input, keeping the entries' buffers.
@@ -137,6 +177,7 @@ impl<T: Coord> Triangulator<T> {
             && work >= PARALLEL_MIN_VERTICES
             && many.in_parallel(polygons, options, threads, out);
         if !done {
+            many.lend_threads(&mut self.worker, options, work);
             let jobs = polygons.iter().zip(out.iter_mut()).zip(&mut many.outcomes);
             for ((&(vertices, ring_starts), out), outcome) in jobs {
                 let result = self.worker.run(vertices, ring_starts, options, out);
@@ -147,6 +188,17 @@ impl<T: Coord> Triangulator<T> {
             .iter()
             .map(Kept::report)
             .collect()
+    }
+}
+
+impl<T: Coord> Triangulator<T> {
+    /// Sets the ring size (nodes after bridging) from which the fast strategy clips one
+    /// polygon by mark-and-cut when [`Options::with_threads`] asks for several threads.
+    /// The default is measured on the machines the project benchmarks on; tests lower it
+    /// to exercise mark-and-cut on small inputs. Not part of the stable API.
+    #[doc(hidden)]
+    pub fn set_mark_and_cut_min(&mut self, nodes: usize) {
+        self.many.mark_and_cut_min = Some(nodes);
     }
 }
 
@@ -162,17 +214,10 @@ impl Many {
         out: &mut [Vec<[u32; 3]>],
     ) -> bool {
         use rayon::prelude::*;
-        if self.pool.as_ref().map(|p| p.workers.len()) != Some(threads) {
-            let Ok(pool) = rayon::ThreadPoolBuilder::new().num_threads(threads).build() else {
-                return false;
-            };
-            let workers = (0..threads).map(|_| Default::default()).collect();
-            self.pool = Some(Pool {
-                threads: pool,
-                workers,
-            });
-        }
-        let Some(pool) = &self.pool else { return false };
+        let min = self.mark_and_cut_min();
+        let Some(pool) = started(&mut self.pool, threads) else {
+            return false;
+        };
         let outcomes = &mut self.outcomes[..polygons.len()];
         pool.threads.install(|| {
             let jobs = polygons
@@ -188,11 +233,36 @@ impl Many {
                     Ok(worker) => worker,
                     Err(poisoned) => poisoned.into_inner(),
                 };
+                // a large input clips on the same threads, as it would alone
+                lend(&mut worker, Some(&pool.threads), vertices.len(), min);
                 let result = worker.run(vertices, ring_starts, options, out);
                 outcome.record(&worker, result, out.len());
             });
         });
         true
+    }
+
+    /// Gives `worker`'s clip stage the threads `options` asks for when the input (of
+    /// `vertices` vertices) is large enough for mark-and-cut, and none otherwise.
+    pub(super) fn lend_threads(&mut self, worker: &mut Worker, options: &Options, vertices: usize) {
+        #[cfg(feature = "threads")]
+        {
+            let threads = thread_count(options);
+            let min = self.mark_and_cut_min();
+            let pool = (threads > 1 && vertices >= min)
+                .then(|| started(&mut self.pool, threads))
+                .flatten();
+            lend(worker, pool.map(|p| &p.threads), vertices, min);
+        }
+        #[cfg(not(feature = "threads"))]
+        let _ = (worker, options, vertices);
+    }
+
+    /// The ring size from which the fast strategy runs mark-and-cut on several threads.
+    #[cfg(feature = "threads")]
+    fn mark_and_cut_min(&self) -> usize {
+        self.mark_and_cut_min
+            .unwrap_or(crate::stages::clip::MARK_AND_CUT_MIN)
     }
 
     /// Without the `threads` feature the caller runs every input itself.

@@ -177,6 +177,7 @@ impl<T: Coord> Triangulator<T> {
     ) -> Result<Report<'_>, Error> {
         self.projected.clear();
         fill(&mut self.projected);
+        (self.many).lend_threads(&mut self.worker, options, self.projected.len());
         let made = (self.worker).run(&self.projected, ring_starts, options, out)?;
         Ok(self.report(made, out.len()))
     }
@@ -224,6 +225,7 @@ impl<T: Coord> Triangulator<T> {
         options: &Options,
         out: &mut Vec<[u32; 3]>,
     ) -> Result<Report<'_>, Error> {
+        (self.many).lend_threads(&mut self.worker, options, vertices.len());
         let made = self.worker.run(vertices, ring_starts, options, out)?;
         Ok(self.report(made, out.len()))
     }

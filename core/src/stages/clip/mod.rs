@@ -33,6 +33,10 @@ use crate::structures::Tips;
 use crate::{Error, Strategy};
 
 mod ear;
+#[cfg(feature = "threads")]
+mod marks;
+#[cfg(feature = "threads")]
+pub(crate) use marks::{Lent, MARK_AND_CUT_MIN};
 mod queue;
 mod repair;
 
@@ -87,6 +91,13 @@ pub(crate) struct Scratch {
     /// split, and a per-split budget multiplied by the number of pieces is unbounded in
     /// practice (seconds on a hundred vertices).
     split_budget: usize,
+    /// The threads of mark-and-cut, for the fast strategy on a large polygon (see
+    /// [`marks`]); `None` clips on the caller's thread.
+    #[cfg(feature = "threads")]
+    pub threads: Option<Lent>,
+    /// Mark-and-cut's marks, one buffer per chunk of the ring.
+    #[cfg(feature = "threads")]
+    marks: Vec<marks::Marks>,
 }
 
 /// One polygon being clipped.
@@ -145,7 +156,11 @@ pub(crate) fn clip(
             let (mut clipper, start) = Clipper::new(cx, s, out, start, avoid_crossed);
             match strategy {
                 // (Seidel never comes here: the triangulator gives it its own stage)
-                Strategy::Fast | Strategy::Seidel => clipper.fast(start)?,
+                Strategy::Fast | Strategy::Seidel => {
+                    #[cfg(feature = "threads")]
+                    let start = clipper.mark_and_cut(start);
+                    clipper.fast(start)?
+                }
                 Strategy::Quality => clipper.quality(start)?,
             }
         }
@@ -501,12 +516,19 @@ impl<'a> Clipper<'a> {
     /// so that `interferes` stays inlined in it (measured: the other way round is slower).
     #[inline(never)]
     fn is_ear(&self, ear: NodeId) -> bool {
+        self.ear_test(ear, || {})
+    }
+
+    /// [`Clipper::is_ear`], calling `looked` for every reflex node it looks at.
+    #[inline(always)]
+    fn ear_test(&self, ear: NodeId, mut looked: impl FnMut()) -> bool {
         let Some((an, cn)) = self.may_be_ear(ear) else {
             return false;
         };
         let pool = &self.cx.pool;
         let (a, b, c) = (pool.p(an), pool.p(ear), pool.p(cn));
         !self.any_reflex_near(a, b, c, |r, q| {
+            looked();
             r != an && r != ear && r != cn && interferes(pool, r, q, a, b, c)
         })
     }

@@ -71,7 +71,7 @@ polytri-fast is strict: it refuses crossing edges \
 to find them, and runs extra passes on input that has some. polytri-check is strict mode's \
 input check alone (loading, the edge sweep, nesting), no triangulation: compare it with \
 polytri-fast for the check's share. polytri-threads is polytri-fast with the polygons of a \
-file spread over every core (triangulate_many; one polygon runs on one thread). On \
+file spread over every core (triangulate_many; one polygon of 262,144 vertices or more is clipped by mark-and-cut on them). On \
 request (--polytri): even-odd and seidel-even-odd read all of a file's rings at once by \
 the even-odd fill rule (crossing edges split at exactly rounded points), with the fast \
 ear clipper or Seidel's trapezoidation, as lyon and i-triangle read them; seidel is \

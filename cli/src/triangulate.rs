@@ -88,8 +88,10 @@ pub struct Args {
     #[arg(long)]
     pub per_triangle: bool,
 
-    /// Threads for files of several polygons; 0 uses every core. The result does not
-    /// depend on it
+    /// Threads for files of several polygons, and for a polygon of 262,144 vertices or
+    /// more (mark-and-cut, fast strategy); 0 uses every core. The result is the same for
+    /// every count from 2 on (a polygon that large gets other, equally valid, triangles
+    /// with 1)
     #[arg(long, value_name = "N", default_value_t = 0)]
     pub threads: usize,
 

@@ -65,9 +65,13 @@ pub(crate) struct Scratch {
     order: Vec<u32>,
     cells: Cells,
     crossings: Vec<([f64; 2], u32, u32)>,
+    /// The pairs of edges found crossing (each once after sorting).
+    pairs: Vec<(u32, u32)>,
     on_edge: Vec<u32>,
     /// Fragments: hot points `(lo, hi)` and the net count from lo to hi.
     fragments: Vec<(u32, u32, i32)>,
+    /// The fragments being split at vertices (then the buffer of the ones before).
+    split: Vec<(u32, u32, i32)>,
     winding: winding::Scratch,
     trace: trace::Scratch,
     /// The result: rings of positions, their starts, and each position's output index;
@@ -220,7 +224,8 @@ fn find_crossings(s: &mut Scratch, lo: [f64; 2], hi: [f64; 2], grid: SnapGrid, r
         let e = edges[i];
         frame.along(hot[e.a as usize], hot[e.b as usize], pad, &mut *push);
     });
-    let mut pairs: Vec<(u32, u32)> = Vec::new();
+    let pairs = &mut s.pairs;
+    pairs.clear();
     for c in 0..s.cells.len() {
         let list = s.cells.cell(c);
         for (k, &i) in list.iter().enumerate() {
@@ -242,7 +247,7 @@ fn find_crossings(s: &mut Scratch, lo: [f64; 2], hi: [f64; 2], grid: SnapGrid, r
     }
     pairs.sort_unstable();
     pairs.dedup();
-    for (i, j) in pairs {
+    for &(i, j) in pairs.iter() {
         let (e, f) = (edges[i as usize], edges[j as usize]);
         let p = grid.crossing(
             hot[e.a as usize],
@@ -365,7 +370,8 @@ fn split_at_vertices(s: &mut Scratch, lo: [f64; 2], hi: [f64; 2], reach: f64) {
     }
     let frame = s.cells.frame;
     let pad = 8.0 * reach;
-    let mut out = Vec::with_capacity(s.fragments.len());
+    let mut out = core::mem::take(&mut s.split);
+    out.clear();
     for &(a, b, _) in &s.fragments {
         let (pa, pb) = (s.hot[a as usize], s.hot[b as usize]);
         s.on_edge.clear();
@@ -383,7 +389,35 @@ fn split_at_vertices(s: &mut Scratch, lo: [f64; 2], hi: [f64; 2], reach: f64) {
         });
         push_path(&mut out, &mut s.on_edge, &s.hot, a, b);
     }
-    s.fragments = out;
+    s.split = core::mem::replace(&mut s.fragments, out);
+}
+
+/// Sorts the items `0..` by their `keys` (each below `n`) into compressed rows: row `k`
+/// holds `items[first[k]..first[k + 1]]`, in item order. A counting sort that uses
+/// `first[k + 1]` as row k's cursor (ending at row k + 1's start), so it needs no buffer
+/// besides its two outputs.
+fn rows(
+    first: &mut Vec<u32>,
+    items: &mut Vec<u32>,
+    n: usize,
+    keys: impl Iterator<Item = u32> + Clone,
+) {
+    first.clear();
+    first.resize(n + 2, 0);
+    for k in keys.clone() {
+        first[k as usize + 2] += 1;
+    }
+    for v in 2..n + 2 {
+        first[v] += first[v - 1];
+    }
+    items.clear();
+    items.resize(first[n + 1] as usize, 0);
+    for (i, k) in keys.enumerate() {
+        let at = &mut first[k as usize + 1];
+        items[*at as usize] = i as u32;
+        *at += 1;
+    }
+    first.truncate(n + 1);
 }
 
 /// Merges fragments between the same two points, summing their directions (from the

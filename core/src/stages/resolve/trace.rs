@@ -46,35 +46,12 @@ impl Scratch {
     }
 }
 
-fn rows(
-    first: &mut Vec<u32>,
-    items: &mut Vec<u32>,
-    n: usize,
-    keys: impl Iterator<Item = u32> + Clone,
-) {
-    first.clear();
-    first.resize(n + 1, 0);
-    for k in keys.clone() {
-        first[k as usize + 1] += 1;
-    }
-    for v in 0..n {
-        first[v + 1] += first[v];
-    }
-    let mut next = first[..n].to_vec();
-    items.clear();
-    items.resize(first[n] as usize, 0);
-    for (i, k) in keys.enumerate() {
-        items[next[k as usize] as usize] = i as u32;
-        next[k as usize] += 1;
-    }
-}
-
 /// Links `edges` (directed, the region on their left) into simple rings.
 pub(crate) fn rings(s: &mut Scratch, hot: &[[f64; 2]], edges: &[(u32, u32)]) -> Result<(), Error> {
     let n = hot.len();
     let broken = Error::Internal { stage: "resolve" };
-    rows(&mut s.first, &mut s.leaving, n, edges.iter().map(|e| e.0));
-    rows(
+    super::rows(&mut s.first, &mut s.leaving, n, edges.iter().map(|e| e.0));
+    super::rows(
         &mut s.first_in,
         &mut s.arriving,
         n,

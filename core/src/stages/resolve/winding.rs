@@ -80,21 +80,12 @@ pub(crate) fn boundary(
     }
     // edges by their smaller end
     let n = hot.len();
-    s.first.clear();
-    s.first.resize(n + 1, 0);
-    for e in &s.edges {
-        s.first[e.p as usize + 1] += 1;
-    }
-    for v in 0..n {
-        s.first[v + 1] += s.first[v];
-    }
-    s.starting.clear();
-    s.starting.resize(s.edges.len(), 0);
-    let mut next = s.first[..n].to_vec();
-    for (i, e) in s.edges.iter().enumerate() {
-        s.starting[next[e.p as usize] as usize] = i as u32;
-        next[e.p as usize] += 1;
-    }
+    super::rows(
+        &mut s.first,
+        &mut s.starting,
+        n,
+        s.edges.iter().map(|e| e.p),
+    );
     s.order.clear();
     s.order.extend(0..n as u32);
     s.order

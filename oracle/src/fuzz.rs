@@ -8,7 +8,11 @@
 //!
 //! Every finding carries the input as a corpus case, so its `Display` is a JSON file that
 //! can be dropped into `corpus/cases/`.
+//!
+//! `raw_rings` and `nested_valid` also run the fast strategy on two threads, with
+//! mark-and-cut lowered to rings of 16 nodes so that the fuzzed inputs take its rounds.
 
+use std::cell::RefCell;
 use std::fmt;
 
 use arbitrary::Unstructured;
@@ -65,16 +69,27 @@ struct Run {
     strategy: Strategy,
     f32: bool,
     lenient: bool,
+    /// Two threads, and mark-and-cut from [`MARK_AND_CUT_FROM`] nodes on, so that fuzzed
+    /// inputs (a few hundred vertices) take its rounds.
+    threads: bool,
 }
+
+/// The ring size from which [`Run::threads`] runs clip by mark-and-cut.
+const MARK_AND_CUT_FROM: usize = 16;
 
 impl fmt::Display for Run {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "{:?} {} {}",
+            "{:?} {} {}{}",
             self.strategy,
             if self.f32 { "f32" } else { "f64" },
-            if self.lenient { "lenient" } else { "strict" }
+            if self.lenient { "lenient" } else { "strict" },
+            if self.threads {
+                " on 2 threads (mark-and-cut)"
+            } else {
+                ""
+            }
         )
     }
 }
@@ -88,34 +103,69 @@ fn triangulate(
     let opts = Options::default()
         .with_strategy(run.strategy)
         .with_nesting(nesting)
-        .with_lenient(run.lenient);
+        .with_lenient(run.lenient)
+        .with_threads(if run.threads { 2 } else { 1 });
     let mut out = Vec::new();
     let kept_all = if run.f32 {
-        let mut tri = Triangulator::<f32>::new();
         let vertices = input.vertices_f32();
-        let report = tri.triangulate(&vertices, &input.ring_starts, &opts, &mut out)?;
-        report.dropped.is_empty()
+        with_triangulator(&TRI32, run.threads, |tri| {
+            let report = tri.triangulate(&vertices, &input.ring_starts, &opts, &mut out)?;
+            Ok(report.dropped.is_empty())
+        })?
     } else {
-        let mut tri = Triangulator::<f64>::new();
-        let report = tri.triangulate(&input.vertices, &input.ring_starts, &opts, &mut out)?;
-        report.dropped.is_empty()
+        with_triangulator(&TRI64, run.threads, |tri| {
+            let report = tri.triangulate(&input.vertices, &input.ring_starts, &opts, &mut out)?;
+            Ok(report.dropped.is_empty())
+        })?
     };
     Ok((out, kept_all))
 }
 
-/// Every combination of strategy, precision and mode.
+thread_local! {
+    /// The triangulators of [`Run::threads`] runs, kept so that their thread pools are
+    /// started once per fuzzing thread, not once per input.
+    static TRI32: RefCell<Triangulator<f32>> = RefCell::new(with_mark_and_cut());
+    static TRI64: RefCell<Triangulator<f64>> = RefCell::new(with_mark_and_cut());
+}
+
+fn with_mark_and_cut<T: polytri::Coord>() -> Triangulator<T> {
+    let mut tri = Triangulator::new();
+    tri.set_mark_and_cut_min(MARK_AND_CUT_FROM);
+    tri
+}
+
+/// Calls `f` with the kept triangulator of `kept` when `threads`, else with a new one.
+fn with_triangulator<T: polytri::Coord, R>(
+    kept: &'static std::thread::LocalKey<RefCell<Triangulator<T>>>,
+    threads: bool,
+    f: impl FnOnce(&mut Triangulator<T>) -> R,
+) -> R {
+    if threads {
+        kept.with(|tri| f(&mut tri.borrow_mut()))
+    } else {
+        f(&mut Triangulator::new())
+    }
+}
+
+/// Every combination of strategy, precision and mode, and the fast strategy's on two
+/// threads (mark-and-cut; the quality strategy is sequential whatever the count).
 fn all_runs() -> impl Iterator<Item = Run> {
-    [Strategy::Fast, Strategy::Quality]
-        .into_iter()
-        .flat_map(|strategy| {
-            [false, true].into_iter().flat_map(move |f32| {
-                [false, true].into_iter().map(move |lenient| Run {
-                    strategy,
-                    f32,
-                    lenient,
-                })
+    [
+        (Strategy::Fast, false),
+        (Strategy::Quality, false),
+        (Strategy::Fast, true),
+    ]
+    .into_iter()
+    .flat_map(|(strategy, threads)| {
+        [false, true].into_iter().flat_map(move |f32| {
+            [false, true].into_iter().map(move |lenient| Run {
+                strategy,
+                f32,
+                lenient,
+                threads,
             })
         })
+    })
 }
 
 /// Coordinates the oracle can judge exactly (finite, products neither overflow nor
@@ -382,6 +432,7 @@ pub fn precision(data: &[u8]) -> Result<(), Finding> {
                 strategy,
                 f32,
                 lenient: false,
+                threads: false,
             };
             let (judged, input_valid) = if f32 {
                 (&rounded, f32_valid)
@@ -421,6 +472,7 @@ pub fn quality_vs_cdt(data: &[u8]) -> Result<(), Finding> {
         strategy: Strategy::Quality,
         f32: false,
         lenient: false,
+        threads: false,
     };
     let (triangles, kept_all) = match triangulate(&case.input, TriNesting::Auto, run) {
         Ok(result) => result,

@@ -112,10 +112,21 @@ fn lend(
     min: usize,
 ) {
     use crate::stages::clip::Lent;
-    worker.stages.clip.threads = threads.filter(|_| vertices >= min).map(|pool| Lent {
-        pool: pool.clone(),
-        min,
-    });
+    worker.stages.clip.threads = threads
+        .filter(|_| may_mark_and_cut(vertices, min))
+        .map(|pool| Lent {
+            pool: pool.clone(),
+            min,
+        });
+}
+
+/// Whether an input of `vertices` vertices may make a ring of `min` nodes, which the clip
+/// stage then gives to mark-and-cut: bridging adds two nodes per hole (of three vertices
+/// or more), so a ring has fewer than twice the input's vertices. The same test for an
+/// input alone and in a batch, so that both give the same triangles.
+#[cfg(feature = "threads")]
+fn may_mark_and_cut(vertices: usize, min: usize) -> bool {
+    vertices.saturating_mul(2) >= min
 }
 
 /// The number of threads `options` asks for: 0 means every available core (asked once:
@@ -177,9 +188,15 @@ impl<T: Coord> Triangulator<T> {
             && work >= PARALLEL_MIN_VERTICES
             && many.in_parallel(polygons, options, threads, out);
         if !done {
-            many.lend_threads(&mut self.worker, options, work);
+            #[cfg(feature = "threads")]
+            let (pool, min) = {
+                let largest = polygons.iter().map(|(v, _)| v.len()).max().unwrap_or(0);
+                (many.pool_for(options, largest), many.mark_and_cut_min())
+            };
             let jobs = polygons.iter().zip(out.iter_mut()).zip(&mut many.outcomes);
             for ((&(vertices, ring_starts), out), outcome) in jobs {
+                #[cfg(feature = "threads")]
+                lend(&mut self.worker, pool.as_ref(), vertices.len(), min);
                 let result = self.worker.run(vertices, ring_starts, options, out);
                 outcome.record(&self.worker, result, out.len());
             }
@@ -247,15 +264,26 @@ impl Many {
     pub(super) fn lend_threads(&mut self, worker: &mut Worker, options: &Options, vertices: usize) {
         #[cfg(feature = "threads")]
         {
-            let threads = thread_count(options);
-            let min = self.mark_and_cut_min();
-            let pool = (threads > 1 && vertices >= min)
-                .then(|| started(&mut self.pool, threads))
-                .flatten();
-            lend(worker, pool.map(|p| &p.threads), vertices, min);
+            let pool = self.pool_for(options, vertices);
+            lend(worker, pool.as_ref(), vertices, self.mark_and_cut_min());
         }
         #[cfg(not(feature = "threads"))]
         let _ = (worker, options, vertices);
+    }
+
+    /// The threads for mark-and-cut on inputs of up to `vertices` vertices, when
+    /// `options` asks for more than one (the pool started on first use).
+    #[cfg(feature = "threads")]
+    fn pool_for(
+        &mut self,
+        options: &Options,
+        vertices: usize,
+    ) -> Option<std::sync::Arc<rayon::ThreadPool>> {
+        let threads = thread_count(options);
+        let wanted = threads > 1 && may_mark_and_cut(vertices, self.mark_and_cut_min());
+        wanted
+            .then(|| started(&mut self.pool, threads).map(|p| p.threads.clone()))
+            .flatten()
     }
 
     /// The ring size from which the fast strategy runs mark-and-cut on several threads.

@@ -9,8 +9,8 @@
 //! the marked ears are cut in ring order, each only if its neighbours are still the ones
 //! its test saw (an ear at a chunk's start whose predecessor was cut at the previous
 //! chunk's end waits for the next round). Ears whose tips are not adjacent do not overlap,
-//! so each cut leaves the others ears; cutting is a few pointer updates, marking is the
-//! ear tests, so the rounds run at about the speed of the threads.
+//! so each cut leaves the others ears. Marking is the ear tests, the larger part where
+//! they are costly; cutting is a few pointer updates and the reflex grid's bookkeeping.
 //!
 //! Rounds go on while they cut at least one ear per [`FEW`] nodes left and their ear tests
 //! are costly (see [`LOOKED_MIN`]); then the sequential walk finishes (as the paper does),

@@ -141,7 +141,12 @@ pub(crate) fn clip(
 ) -> Result<usize, Error> {
     let mut polygons = 0;
     s.split_budget = SPLIT_BUDGET;
-    if strategy == Strategy::Fast && cx.pool.len() >= LAY_OUT_MIN {
+    // (mark-and-cut needs the layout: its chunks are ranges of ids)
+    #[cfg(feature = "threads")]
+    let lay_out_min = (s.threads.as_ref()).map_or(LAY_OUT_MIN, |t| t.min.min(LAY_OUT_MIN));
+    #[cfg(not(feature = "threads"))]
+    let lay_out_min = LAY_OUT_MIN;
+    if strategy == Strategy::Fast && cx.pool.len() >= lay_out_min {
         lay_out(cx, s);
     }
     for r in 0..cx.rings.len() {

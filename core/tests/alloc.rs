@@ -331,5 +331,37 @@ fn warmed_up_triangulate_many_allocates_only_its_results() {
             "two threads: {n} allocations for {} inputs",
             polygons.len()
         );
+        warmed_up_mark_and_cut_allocates_nothing();
     }
+}
+
+/// Mark-and-cut (one large polygon on two threads, the size it starts at lowered) keeps
+/// its marks between calls: a second call allocates nothing on any thread.
+fn warmed_up_mark_and_cut_allocates_nothing() {
+    let (name, flat, nesting) = inputs()
+        .into_iter()
+        .find(|(name, _, _)| name == "star")
+        .expect("the star input");
+    let mut tri = Triangulator::<f64>::new();
+    tri.set_mark_and_cut_min(1000);
+    let opts = Options::default().with_nesting(nesting).with_threads(2);
+    let mut out = Vec::new();
+    let mut one = Vec::new();
+    let single = Options::default().with_nesting(nesting);
+    Triangulator::<f64>::new()
+        .triangulate(&flat.vertices, &flat.ring_starts, &single, &mut one)
+        .expect("valid");
+    tri.triangulate(&flat.vertices, &flat.ring_starts, &opts, &mut out)
+        .expect("valid");
+    assert_ne!(out, one, "{name}: mark-and-cut did not run");
+    EVERY_COUNT.store(0, Ordering::Relaxed);
+    EVERY_THREAD.store(true, Ordering::Relaxed);
+    let again = tri.triangulate(&flat.vertices, &flat.ring_starts, &opts, &mut out);
+    EVERY_THREAD.store(false, Ordering::Relaxed);
+    assert!(again.is_ok());
+    let n = EVERY_COUNT.load(Ordering::Relaxed);
+    assert_eq!(
+        n, 0,
+        "{name} by mark-and-cut: {n} allocations on the second call"
+    );
 }

@@ -343,7 +343,7 @@ fn warmed_up_mark_and_cut_allocates_nothing() {
         .find(|(name, _, _)| name == "star")
         .expect("the star input");
     let mut tri = Triangulator::<f64>::new();
-    tri.set_mark_and_cut_min(1000);
+    tri.set_mark_and_cut(1000, 256);
     let opts = Options::default().with_nesting(nesting).with_threads(2);
     let mut out = Vec::new();
     let mut one = Vec::new();

@@ -10,7 +10,8 @@
 //! can be dropped into `corpus/cases/`.
 //!
 //! `raw_rings` and `nested_valid` also run the fast strategy on two threads, with
-//! mark-and-cut lowered to rings of 16 nodes so that the fuzzed inputs take its rounds.
+//! mark-and-cut lowered to rings of 16 nodes in chunks of 8, so that the fuzzed inputs
+//! take its rounds and their ears straddle chunk boundaries.
 
 use std::cell::RefCell;
 use std::fmt;
@@ -74,8 +75,10 @@ struct Run {
     threads: bool,
 }
 
-/// The ring size from which [`Run::threads`] runs clip by mark-and-cut.
+/// The ring size from which [`Run::threads`] runs clip by mark-and-cut, and the nodes per
+/// chunk of its rounds: small, so that ears meet chunk boundaries often.
 const MARK_AND_CUT_FROM: usize = 16;
+const MARK_AND_CUT_CHUNK: usize = 8;
 
 impl fmt::Display for Run {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
@@ -130,7 +133,7 @@ thread_local! {
 
 fn with_mark_and_cut<T: polytri::Coord>() -> Triangulator<T> {
     let mut tri = Triangulator::new();
-    tri.set_mark_and_cut_min(MARK_AND_CUT_FROM);
+    tri.set_mark_and_cut(MARK_AND_CUT_FROM, MARK_AND_CUT_CHUNK);
     tri
 }
 

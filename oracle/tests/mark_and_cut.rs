@@ -1,7 +1,7 @@
 //! Mark-and-cut: the fast strategy clipping one large polygon on several threads gives the
 //! same triangles for every thread count from two on, alone or in a batch, and the oracle
-//! accepts them. The size from which it runs is lowered so that inputs of a few thousand
-//! vertices take it (its default suits much larger ones).
+//! accepts them. The sizes it runs from and chunks by are lowered so that inputs of a few
+//! thousand vertices take it, in many chunks (its defaults suit much larger ones).
 
 use polytri::{Options, Triangulator};
 use polytri_oracle::gen::{generate, Family, Params};
@@ -10,8 +10,9 @@ use polytri_oracle::{check_with, CheckOptions, Input};
 
 const SIZE: usize = 12_000;
 
-/// Rings of at least this many nodes take mark-and-cut here.
+/// Rings of at least this many nodes take mark-and-cut here, in chunks of this many.
 const MIN: usize = 2_000;
+const CHUNK: usize = 500;
 
 fn inputs() -> Vec<(String, Input)> {
     let mut inputs: Vec<(String, Input)> = Series::ALL
@@ -34,7 +35,7 @@ fn options(input: &Input, threads: usize) -> Options {
 
 fn triangulate(input: &Input, threads: usize) -> Vec<[u32; 3]> {
     let mut tri = Triangulator::<f64>::new();
-    tri.set_mark_and_cut_min(MIN);
+    tri.set_mark_and_cut(MIN, CHUNK);
     let mut out = Vec::new();
     tri.triangulate(
         &input.vertices,
@@ -43,6 +44,15 @@ fn triangulate(input: &Input, threads: usize) -> Vec<[u32; 3]> {
         &mut out,
     )
     .expect("valid input");
+    // the log names disjoint runs of the output, in order, marked by one of the threads
+    let log = tri.mark_and_cut_log();
+    assert!(threads > 1 || log.is_empty());
+    let mut end = 0;
+    for &[first, last, thread, _] in log {
+        assert!(end <= first && first < last && last as usize <= out.len());
+        assert!((thread as usize) < threads);
+        end = last;
+    }
     out
 }
 
@@ -94,7 +104,7 @@ fn a_batch_clips_each_input_as_alone() {
         .map(|i| (&i.vertices[..], &i.ring_starts[..]))
         .collect();
     let mut tri = Triangulator::<f64>::new();
-    tri.set_mark_and_cut_min(MIN);
+    tri.set_mark_and_cut(MIN, CHUNK);
     let mut out = Vec::new();
     let results = tri.triangulate_many(&batch, &options(&inputs[0], 2), &mut out);
     for (k, input) in inputs.iter().enumerate() {

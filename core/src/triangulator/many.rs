@@ -69,8 +69,8 @@ impl Kept {
 #[derive(Debug, Default)]
 pub(super) struct Many {
     outcomes: Vec<Kept>,
-    /// [`Triangulator::set_mark_and_cut_min`]'s size, if set.
-    mark_and_cut_min: Option<usize>,
+    /// [`Triangulator::set_mark_and_cut`]'s sizes (ring, chunk), if set.
+    mark_and_cut: Option<(usize, usize)>,
     #[cfg(feature = "threads")]
     pool: Option<Pool>,
 }
@@ -102,14 +102,15 @@ fn started(slot: &mut Option<Pool>, threads: usize) -> Option<&Pool> {
     slot.as_ref()
 }
 
-/// Gives `worker`'s clip stage `threads` for mark-and-cut when the input (of `vertices`
-/// vertices) has at least `min`, and none otherwise.
+/// Gives `worker`'s clip stage `threads` for mark-and-cut (from rings of `min` nodes on,
+/// in chunks of `chunk`) when the input of `vertices` vertices may make such a ring, and
+/// none otherwise.
 #[cfg(feature = "threads")]
 fn lend(
     worker: &mut Worker,
     threads: Option<&std::sync::Arc<rayon::ThreadPool>>,
     vertices: usize,
-    min: usize,
+    (min, chunk): (usize, usize),
 ) {
     use crate::stages::clip::Lent;
     worker.stages.clip.threads = threads
@@ -117,6 +118,7 @@ fn lend(
         .map(|pool| Lent {
             pool: pool.clone(),
             min,
+            chunk,
         });
 }
 
@@ -189,14 +191,14 @@ impl<T: Coord> Triangulator<T> {
             && many.in_parallel(polygons, options, threads, out);
         if !done {
             #[cfg(feature = "threads")]
-            let (pool, min) = {
+            let (pool, sizes) = {
                 let largest = polygons.iter().map(|(v, _)| v.len()).max().unwrap_or(0);
-                (many.pool_for(options, largest), many.mark_and_cut_min())
+                (many.pool_for(options, largest), many.mark_and_cut())
             };
             let jobs = polygons.iter().zip(out.iter_mut()).zip(&mut many.outcomes);
             for ((&(vertices, ring_starts), out), outcome) in jobs {
                 #[cfg(feature = "threads")]
-                lend(&mut self.worker, pool.as_ref(), vertices.len(), min);
+                lend(&mut self.worker, pool.as_ref(), vertices.len(), sizes);
                 let result = self.worker.run(vertices, ring_starts, options, out);
                 outcome.record(&self.worker, result, out.len());
             }
@@ -210,12 +212,30 @@ impl<T: Coord> Triangulator<T> {
 
 impl<T: Coord> Triangulator<T> {
     /// Sets the ring size (nodes after bridging) from which the fast strategy clips one
-    /// polygon by mark-and-cut when [`Options::with_threads`] asks for several threads.
-    /// The default is measured on the machines the project benchmarks on; tests lower it
-    /// to exercise mark-and-cut on small inputs. Not part of the stable API.
+    /// polygon by mark-and-cut when [`Options::with_threads`] asks for several threads,
+    /// and the nodes per chunk of a round. The defaults are measured on the machines the
+    /// project benchmarks on; tests and the fuzzer lower both to take small inputs through
+    /// the rounds and across chunk boundaries. Not part of the stable API.
     #[doc(hidden)]
-    pub fn set_mark_and_cut_min(&mut self, nodes: usize) {
-        self.many.mark_and_cut_min = Some(nodes);
+    pub fn set_mark_and_cut(&mut self, min_nodes: usize, chunk: usize) {
+        self.many.mark_and_cut = Some((min_nodes, chunk.max(1)));
+    }
+
+    /// Which thread marked which triangles in the last call's mark-and-cut rounds: each
+    /// entry `[first, end, thread, round]` says that triangles `first..end` of the output
+    /// were ears marked by pool thread `thread` in round `round`; triangles no entry names
+    /// were cut by the sequential walk. For pictures (`examples/mark_and_cut_svg.rs`); not
+    /// part of the stable API.
+    #[doc(hidden)]
+    pub fn mark_and_cut_log(&self) -> &[[u32; 4]] {
+        #[cfg(feature = "threads")]
+        {
+            self.worker.stages.clip.log()
+        }
+        #[cfg(not(feature = "threads"))]
+        {
+            &[]
+        }
     }
 }
 
@@ -231,7 +251,7 @@ impl Many {
         out: &mut [Vec<[u32; 3]>],
     ) -> bool {
         use rayon::prelude::*;
-        let min = self.mark_and_cut_min();
+        let sizes = self.mark_and_cut();
         let Some(pool) = started(&mut self.pool, threads) else {
             return false;
         };
@@ -251,7 +271,7 @@ impl Many {
                     Err(poisoned) => poisoned.into_inner(),
                 };
                 // a large input clips on the same threads, as it would alone
-                lend(&mut worker, Some(&pool.threads), vertices.len(), min);
+                lend(&mut worker, Some(&pool.threads), vertices.len(), sizes);
                 let result = worker.run(vertices, ring_starts, options, out);
                 outcome.record(&worker, result, out.len());
             });
@@ -265,7 +285,7 @@ impl Many {
         #[cfg(feature = "threads")]
         {
             let pool = self.pool_for(options, vertices);
-            lend(worker, pool.as_ref(), vertices, self.mark_and_cut_min());
+            lend(worker, pool.as_ref(), vertices, self.mark_and_cut());
         }
         #[cfg(not(feature = "threads"))]
         let _ = (worker, options, vertices);
@@ -280,17 +300,19 @@ impl Many {
         vertices: usize,
     ) -> Option<std::sync::Arc<rayon::ThreadPool>> {
         let threads = thread_count(options);
-        let wanted = threads > 1 && may_mark_and_cut(vertices, self.mark_and_cut_min());
+        let wanted = threads > 1 && may_mark_and_cut(vertices, self.mark_and_cut().0);
         wanted
             .then(|| started(&mut self.pool, threads).map(|p| p.threads.clone()))
             .flatten()
     }
 
-    /// The ring size from which the fast strategy runs mark-and-cut on several threads.
+    /// The ring size from which the fast strategy runs mark-and-cut on several threads,
+    /// and the nodes per chunk.
     #[cfg(feature = "threads")]
-    fn mark_and_cut_min(&self) -> usize {
-        self.mark_and_cut_min
-            .unwrap_or(crate::stages::clip::MARK_AND_CUT_MIN)
+    fn mark_and_cut(&self) -> (usize, usize) {
+        use crate::stages::clip::{MARK_AND_CUT_CHUNK, MARK_AND_CUT_MIN};
+        self.mark_and_cut
+            .unwrap_or((MARK_AND_CUT_MIN, MARK_AND_CUT_CHUNK))
     }
 
     /// Without the `threads` feature the caller runs every input itself.

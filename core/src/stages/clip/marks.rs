@@ -3,7 +3,7 @@
 //!
 //! A round has two phases. **Mark**, in parallel and read-only: the ring, whose nodes run
 //! through consecutive ids (the clip stage laid the pool out in ring order), is cut into
-//! chunks of [`CHUNK`] ids; a task walks its chunk and tests every tip not marked "not an
+//! chunks of [`MARK_AND_CUT_CHUNK`] ids; a task walks its chunk and tests every tip not marked "not an
 //! ear", skipping the successor of a tip it just marked, so that no two marked ears share
 //! an edge. **Cut**, on the caller's thread: the failed tips are marked "not an ear", then
 //! the marked ears are cut in ring order, each only if its neighbours are still the ones
@@ -25,19 +25,21 @@ use crate::structures::NodeId;
 
 use super::Clipper;
 
-/// Ids per chunk of the ring, one task each.
-const CHUNK: usize = 1 << 12;
+/// Ids per chunk of the ring, one task each (unless [`Lent::chunk`] says otherwise).
+pub(crate) const MARK_AND_CUT_CHUNK: usize = 1 << 12;
 
 /// Rings with fewer nodes clip on the caller's thread (unless [`Lent::min`] says
 /// otherwise): below it the rounds cost as much as the walk, or more (see
 /// `docs/performance.md`, "Threads").
 pub(crate) const MARK_AND_CUT_MIN: usize = 1 << 18;
 
-/// Threads lent to the clip stage for mark-and-cut, and the ring size from which it runs.
+/// Threads lent to the clip stage for mark-and-cut, the ring size from which it runs and
+/// the ids per chunk.
 #[derive(Clone, Debug)]
 pub(crate) struct Lent {
     pub pool: std::sync::Arc<rayon::ThreadPool>,
     pub min: usize,
+    pub chunk: usize,
 }
 
 /// A round that cuts fewer than one ear per this many nodes ends mark-and-cut.
@@ -50,13 +52,15 @@ const FEW: usize = 4;
 const LOOKED_MIN: usize = 8;
 
 /// One chunk's marks: ears to cut (predecessor, tip, successor as tested), tips that
-/// failed their test, and how many tests looked at how many reflex nodes.
+/// failed their test, how many tests looked at how many reflex nodes, and the pool thread
+/// that marked them.
 #[derive(Debug, Default)]
 pub(super) struct Marks {
     ears: Vec<[NodeId; 3]>,
     failed: Vec<NodeId>,
     tests: usize,
     looked: usize,
+    thread: u32,
 }
 
 impl Clipper<'_> {
@@ -64,7 +68,12 @@ impl Clipper<'_> {
     /// stage has threads and the ring is large; returns a live node, where the sequential
     /// walk takes over.
     pub(super) fn mark_and_cut(&mut self, start: NodeId) -> NodeId {
-        let Some(Lent { pool: threads, min }) = self.s.threads.clone() else {
+        let Some(Lent {
+            pool: threads,
+            min,
+            chunk,
+        }) = self.s.threads.clone()
+        else {
             return start;
         };
         if self.len < min || self.avoid_crossed || self.crossing_input() {
@@ -74,10 +83,11 @@ impl Clipper<'_> {
             return start;
         };
         let mut marks = core::mem::take(&mut self.s.marks);
-        let chunks = (hi - lo).div_ceil(CHUNK);
+        let chunks = (hi - lo).div_ceil(chunk);
         if marks.len() < chunks {
             marks.resize_with(chunks, Marks::default);
         }
+        let mut round = 0;
         while self.len >= min && self.reflex_count > 1 {
             let me = &*self;
             threads.install(|| {
@@ -86,12 +96,13 @@ impl Clipper<'_> {
                     .par_iter_mut()
                     .enumerate()
                     .for_each(|(k, m)| {
-                        let from = lo + k * CHUNK;
-                        me.mark(from, (from + CHUNK).min(hi), m);
+                        let from = lo + k * chunk;
+                        me.mark(from, (from + chunk).min(hi), m);
                     });
             });
             let before = self.len;
-            self.cut_marked(&marks[..chunks]);
+            self.cut_marked(&marks[..chunks], round);
+            round += 1;
             let tests: usize = marks[..chunks].iter().map(|m| m.tests).sum();
             let looked: usize = marks[..chunks].iter().map(|m| m.looked).sum();
             if (before - self.len) * FEW < before || looked < LOOKED_MIN * tests {
@@ -126,6 +137,7 @@ impl Clipper<'_> {
         m.ears.clear();
         m.failed.clear();
         (m.tests, m.looked) = (0, 0);
+        m.thread = rayon::current_thread_index().unwrap_or(0) as u32;
         let pool = &self.cx.pool;
         let mut last = NodeId(u32::MAX);
         for i in from..to {
@@ -145,21 +157,27 @@ impl Clipper<'_> {
         }
     }
 
-    /// The cut phase: marks the failed tips, then cuts every marked ear whose neighbours
-    /// are still those it was tested with.
-    fn cut_marked(&mut self, marks: &[Marks]) {
+    /// The cut phase of round `round`: marks the failed tips, then cuts every marked ear
+    /// whose neighbours are still those it was tested with, logging which thread marked
+    /// which triangles.
+    fn cut_marked(&mut self, marks: &[Marks], round: u32) {
         for m in marks {
             for &n in &m.failed {
                 self.cx.pool.get_mut(n).not_ear = true;
             }
         }
         for m in marks {
+            let first = self.out.len() as u32;
             for &[a, b, c] in &m.ears {
                 let pool = &self.cx.pool;
                 let node = pool.get(b);
                 if self.len > 3 && !node.removed && node.prev == a && node.next == c {
                     self.cut(b);
                 }
+            }
+            let end = self.out.len() as u32;
+            if end > first {
+                self.s.log.push([first, end, m.thread, round]);
             }
         }
     }

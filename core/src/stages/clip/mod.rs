@@ -36,7 +36,7 @@ mod ear;
 #[cfg(feature = "threads")]
 mod marks;
 #[cfg(feature = "threads")]
-pub(crate) use marks::{Lent, MARK_AND_CUT_MIN};
+pub(crate) use marks::{Lent, MARK_AND_CUT_CHUNK, MARK_AND_CUT_MIN};
 mod queue;
 mod repair;
 
@@ -98,6 +98,18 @@ pub(crate) struct Scratch {
     /// Mark-and-cut's marks, one buffer per chunk of the ring.
     #[cfg(feature = "threads")]
     marks: Vec<marks::Marks>,
+    /// Mark-and-cut's log of the last call: `[first, end, thread, round]` per chunk that
+    /// cut triangles `first..end` of the output.
+    #[cfg(feature = "threads")]
+    log: Vec<[u32; 4]>,
+}
+
+#[cfg(feature = "threads")]
+impl Scratch {
+    /// Which thread marked which triangles in the last call (see `Scratch::log`).
+    pub fn log(&self) -> &[[u32; 4]] {
+        &self.log
+    }
 }
 
 /// One polygon being clipped.
@@ -141,6 +153,8 @@ pub(crate) fn clip(
 ) -> Result<usize, Error> {
     let mut polygons = 0;
     s.split_budget = SPLIT_BUDGET;
+    #[cfg(feature = "threads")]
+    s.log.clear();
     // (mark-and-cut needs the layout: its chunks are ranges of ids)
     #[cfg(feature = "threads")]
     let lay_out_min = (s.threads.as_ref()).map_or(LAY_OUT_MIN, |t| t.min.min(LAY_OUT_MIN));

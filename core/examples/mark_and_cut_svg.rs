@@ -1,5 +1,6 @@
 //! Draws which thread marked which ear when mark-and-cut clips one polygon:
-//! `cargo run --release -p polytri --features threads --example mark_and_cut_svg -- RINGS.json OUT.svg [CHUNK]`
+//! `cargo run --release -p polytri --features threads --example mark_and_cut_svg --`
+//! `RINGS.json OUT.svg [CHUNK]`
 //!
 //! The polygon (a rings JSON file: its first ring outer, the rest holes) is clipped on two
 //! threads with mark-and-cut lowered to start at once, in chunks of CHUNK nodes (default

@@ -3,14 +3,15 @@
 //!
 //! A round has two phases. **Mark**, in parallel and read-only: the ring, whose nodes run
 //! through consecutive ids (the clip stage laid the pool out in ring order), is cut into
-//! chunks of [`MARK_AND_CUT_CHUNK`] ids; a task walks its chunk and tests every tip not marked "not an
-//! ear", skipping the successor of a tip it just marked, so that no two marked ears share
-//! an edge. **Cut**, on the caller's thread: the failed tips are marked "not an ear", then
-//! the marked ears are cut in ring order, each only if its neighbours are still the ones
-//! its test saw (an ear at a chunk's start whose predecessor was cut at the previous
-//! chunk's end waits for the next round). Ears whose tips are not adjacent do not overlap,
-//! so each cut leaves the others ears. Marking is the ear tests, the larger part where
-//! they are costly; cutting is a few pointer updates and the reflex grid's bookkeeping.
+//! chunks of [`MARK_AND_CUT_CHUNK`] ids; a task walks its chunk and tests every tip not
+//! marked "not an ear", skipping the successor of a tip it just marked, so that no two
+//! marked ears share an edge. **Cut**, on the caller's thread: the failed tips are marked
+//! "not an ear", then the marked ears are cut in ring order, each only if its neighbours
+//! are still the ones its test saw (an ear at a chunk's start whose predecessor was cut at
+//! the previous chunk's end waits for the next round). Ears whose tips are not adjacent
+//! do not overlap, so each cut leaves the others ears. Marking is the ear tests, the
+//! larger part where they are costly; cutting is a few pointer updates and the reflex
+//! grid's bookkeeping.
 //!
 //! Rounds go on while they cut at least one ear per [`FEW`] nodes left and their ear tests
 //! are costly (see [`LOOKED_MIN`]); then the sequential walk finishes (as the paper does),

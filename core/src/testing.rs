@@ -11,6 +11,17 @@ pub(crate) fn random(seed: u64) -> impl FnMut(u64) -> u64 {
     }
 }
 
+/// The same generator's numbers as `f64` in [0, 1): its top 53 bits.
+pub(crate) fn unit_random(seed: u64) -> impl FnMut() -> f64 {
+    let mut state = seed;
+    move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
 use crate::context::Context;
 use crate::triangulator::pipeline::{self, Stages};
 

@@ -505,13 +505,7 @@ mod tests {
     fn the_float_filter_agrees_with_the_exact_test() {
         // segments between grid points and grid points near them (a few pixels off the
         // line, or on it), at magnitudes from 2^-40 to 2^40, on both grids
-        let mut x: u64 = 0x2545_f491_4f6c_dd1d;
-        let mut rand = move || {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            (x >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rand = crate::testing::unit_random(0x2545_f491_4f6c_dd1d);
         let (mut decided, mut total) = (0, 0);
         for f32 in [false, true] {
             let g = SnapGrid { f32 };
@@ -547,13 +541,7 @@ mod tests {
 
     #[test]
     fn the_float_crossing_agrees_with_the_exact_one() {
-        let mut x: u64 = 0x9e37_79b9_7f4a_7c15;
-        let mut rand = move || {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            (x >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rand = crate::testing::unit_random(0x9e37_79b9_7f4a_7c15);
         // (decided, crossing) cases: f32, and f64 with short segments far out
         let (mut f32_cases, mut far_cases) = ((0, 0), (0, 0));
         for f32 in [false, true] {

@@ -223,37 +223,29 @@ impl Iterator for BoxIter<'_> {
 mod tests {
     use super::*;
 
-    /// A small xorshift for boxes.
-    fn rng(seed: &mut u64) -> f64 {
-        *seed ^= *seed << 13;
-        *seed ^= *seed >> 7;
-        *seed ^= *seed << 17;
-        (*seed >> 11) as f64 / (1u64 << 53) as f64
-    }
-
     #[test]
     fn a_query_finds_exactly_the_boxes_meeting_its_own() {
-        let mut seed = 0x9e37_79b9_7f4a_7c15;
+        let mut rng = crate::testing::unit_random(0x9e37_79b9_7f4a_7c15);
         for count in [0, 1, 8, 9, 64, 65, 513, 5000] {
             let mut tree = BoxTree::default();
             let mut edges = Vec::new();
             for k in 0..count {
-                let a = Point::new(rng(&mut seed), rng(&mut seed));
-                let b = Point::new(a.x + 0.3 * rng(&mut seed), a.y - 0.3 * rng(&mut seed));
+                let a = Point::new(rng(), rng());
+                let b = Point::new(a.x + 0.3 * rng(), a.y - 0.3 * rng());
                 tree.push(NodeId(k), a, b);
                 edges.push((a, b));
             }
             tree.seal();
             // a few more after sealing go to the tail
             for k in count..count + 3 {
-                let a = Point::new(rng(&mut seed), rng(&mut seed));
+                let a = Point::new(rng(), rng());
                 tree.push(NodeId(k), a, Point::new(a.x + 0.1, a.y + 0.2));
                 edges.push((a, Point::new(a.x + 0.1, a.y + 0.2)));
             }
             assert_eq!(tree.len(), edges.len());
             for _ in 0..50 {
-                let lo = Point::new(rng(&mut seed), rng(&mut seed));
-                let hi = Point::new(lo.x + 0.2 * rng(&mut seed), lo.y + 0.2 * rng(&mut seed));
+                let lo = Point::new(rng(), rng());
+                let hi = Point::new(lo.x + 0.2 * rng(), lo.y + 0.2 * rng());
                 let mut got: Vec<u32> = tree.query(lo, hi).map(|n| n.0).collect();
                 got.sort_unstable();
                 let want: Vec<u32> = (0..edges.len() as u32)

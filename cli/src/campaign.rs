@@ -19,8 +19,9 @@ Case k is generated from seed S+k alone (family in turn, size log-uniform betwee
 --max-vertices, one case in 32 up to four times larger, sometimes a tiny or huge scale or an \
 offset up to 1e9), so the results do not depend on --jobs; with --cases they are the same \
 every run. Each case runs polytri (strict, automatic nesting) fast and quality, in f64 and \
-in f32 (f32 only where the rounded input is still valid: column 'f32 invalid'), and the \
-oracle judges every result.
+in f32 (f32 only where the rounded input is still valid: column 'f32 invalid'), and with \
+--threads N fast in f64 on N threads (mark-and-cut lowered so that every case takes its \
+rounds; it must give the same triangles on N + 1), and the oracle judges every result.
 
 Columns: min angle = median / smallest over the cases of the smallest triangle angle in \
 degrees, of fast, of quality and of spade's constrained Delaunay triangulation (the best \
@@ -64,6 +65,12 @@ pub struct Args {
     #[arg(long, value_name = "N")]
     pub jobs: Option<usize>,
 
+    /// Also run the fast strategy in f64 on N threads per case (N ≥ 2), clipping by
+    /// mark-and-cut from rings of 16 nodes in chunks of 8; judged, and compared with
+    /// N + 1 threads, which must give the same triangles [default: 1, no such run]
+    #[arg(long, value_name = "N", default_value_t = 1)]
+    pub threads: usize,
+
     /// No progress bar
     #[arg(short, long)]
     pub quiet: bool,
@@ -91,6 +98,7 @@ impl Args {
             max_vertices: self.max_vertices,
             peers: self.peers,
             jobs: self.jobs.unwrap_or(defaults.jobs).max(1),
+            threads: self.threads.max(1),
             out_dir: Some(self.out.clone().unwrap_or_else(default_out)),
             shrink_attempts: defaults.shrink_attempts,
         })

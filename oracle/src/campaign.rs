@@ -61,6 +61,7 @@ use crate::gen::{generate, validate, Case, Family, Params};
 use crate::input::Input;
 use crate::peers::{self, Peer};
 use crate::shrink;
+use crate::threaded;
 
 /// The coordinate type of a run.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -88,6 +89,9 @@ pub struct Run {
     pub strategy: Strategy,
     /// The coordinate type.
     pub precision: Precision,
+    /// Threads: 1 runs on the caller's thread; more clip by mark-and-cut on that many,
+    /// lowered as [`crate::threaded`] lowers it (see [`Config::threads`]).
+    pub threads: usize,
 }
 
 impl Run {
@@ -104,6 +108,15 @@ impl Run {
         Run {
             strategy,
             precision,
+            threads: 1,
+        }
+    }
+
+    /// The fast strategy in `f64` on `threads` threads (see [`Config::threads`]).
+    pub const fn on_threads(threads: usize) -> Run {
+        Run {
+            threads,
+            ..Run::new(Strategy::Fast, Precision::F64)
         }
     }
 
@@ -114,7 +127,12 @@ impl Run {
             Strategy::Quality => "quality",
             Strategy::Seidel => "seidel",
         };
-        format!("{strategy}_{}", self.precision.name())
+        let name = format!("{strategy}_{}", self.precision.name());
+        if self.threads > 1 {
+            format!("{name}_threads{}", self.threads)
+        } else {
+            name
+        }
     }
 }
 
@@ -148,9 +166,16 @@ impl Subject for Polytri {
         let nesting = input.nesting.to_polytri().unwrap_or(polytri::Nesting::Auto);
         let options = polytri::Options::new()
             .with_strategy(run.strategy)
-            .with_nesting(nesting);
+            .with_nesting(nesting)
+            .with_threads(run.threads);
         let mut out = Vec::new();
         let result = match run.precision {
+            Precision::F64 if run.threads > 1 => {
+                threaded::with_kept::<f64, _>(run.threads, |tri| {
+                    tri.triangulate(&input.vertices, &input.ring_starts, &options, &mut out)
+                        .map(|_| ())
+                })
+            }
             Precision::F64 => polytri::Triangulator::<f64>::new()
                 .triangulate(&input.vertices, &input.ring_starts, &options, &mut out)
                 .map(|_| ()),
@@ -193,6 +218,12 @@ pub struct Config {
     pub peers: bool,
     /// Worker threads. Default: the available parallelism.
     pub jobs: usize,
+    /// With 2 or more, every case also runs the fast strategy in `f64` on this many
+    /// threads, clipping by mark-and-cut from rings of 16 nodes on, in chunks of 8 (see
+    /// [`crate::threaded`]): judged by the oracle, and its triangles compared with the
+    /// same run on one thread more, which must give the same ones. Default: 1 (no such
+    /// run).
+    pub threads: usize,
     /// Where failing cases are written after shrinking (`None`: not written). Default:
     /// `None`.
     pub out_dir: Option<PathBuf>,
@@ -210,6 +241,7 @@ impl Default for Config {
             max_vertices: 2000,
             peers: false,
             jobs: std::thread::available_parallelism().map_or(1, |n| n.get()),
+            threads: 1,
             out_dir: None,
             shrink_attempts: shrink::DEFAULT_ATTEMPTS,
         }
@@ -649,6 +681,12 @@ fn run_case(config: &Config, subject: &dyn Subject, k: u64) -> Outcome {
             Err(failure) => outcome.failures.push(failure),
         }
     }
+    if config.threads > 1 {
+        outcome.runs += 1;
+        if let Err(failure) = attempt(subject, &case.input, Run::on_threads(config.threads)) {
+            outcome.failures.push(failure);
+        }
+    }
     if config.peers {
         outcome.peers = Peer::ALL.map(|p| (p, judge_peer(p, &case.input))).to_vec();
     }
@@ -736,10 +774,41 @@ fn judge(
 }
 
 /// Runs and judges `run` on `input` (already rounded for `f32` runs).
+/// On more than one thread, the triangles must also equal those of one thread more
+/// (check `threads_agree`).
 fn attempt(subject: &dyn Subject, input: &Input, run: Run) -> Result<Verdict, RunFailure> {
     let triangles = triangulate(subject, input, run)?;
-    judge(input, run, &triangles, false)
+    let verdict = judge(input, run, &triangles, false)?;
+    if run.threads > 1 {
+        let more = Run {
+            threads: run.threads + 1,
+            ..run
+        };
+        let again = triangulate(subject, input, more)?;
+        if again != triangles {
+            let differ = (triangles.iter().zip(&again))
+                .position(|(t, u)| t != u)
+                .unwrap_or(triangles.len().min(again.len()));
+            return Err(RunFailure {
+                run,
+                fault: Fault::Rejected(THREADS_AGREE.to_owned()),
+                detail: format!(
+                    "{THREADS_AGREE}: {} and {} threads give different triangles \
+                     ({} and {}; the first difference at triangle {differ})",
+                    run.threads,
+                    more.threads,
+                    triangles.len(),
+                    again.len()
+                ),
+                failed_checks: vec![THREADS_AGREE.to_owned()],
+            });
+        }
+    }
+    Ok(verdict)
 }
+
+/// The check a run on several threads fails when one thread more gives other triangles.
+pub const THREADS_AGREE: &str = "threads_agree";
 
 /// The text of a panic payload.
 fn panic_text(payload: &(dyn std::any::Any + Send)) -> String {

@@ -13,7 +13,6 @@
 //! mark-and-cut lowered to rings of 16 nodes in chunks of 8, so that the fuzzed inputs
 //! take its rounds and their ears straddle chunk boundaries.
 
-use std::cell::RefCell;
 use std::fmt;
 
 use arbitrary::Unstructured;
@@ -22,6 +21,7 @@ use polytri::{FillRule, Nesting as TriNesting, Options, Strategy, Triangulator};
 use crate::exact::{MAX_COORDINATE, MIN_COORDINATE};
 use crate::gen::crossing::{generate_crossing, CrossingFamily};
 use crate::gen::{generate, Case, Family, Params};
+use crate::threaded::{self, KeptCoord};
 use crate::{check, check_fill, check_with, CheckOptions, Input, Nesting};
 
 /// A target body: the fuzzer's bytes to `Ok(())` or what was found.
@@ -70,15 +70,10 @@ struct Run {
     strategy: Strategy,
     f32: bool,
     lenient: bool,
-    /// Two threads, and mark-and-cut from [`MARK_AND_CUT_FROM`] nodes on, so that fuzzed
-    /// inputs (a few hundred vertices) take its rounds.
+    /// Two threads, with mark-and-cut lowered as [`crate::threaded`] lowers it, so that
+    /// fuzzed inputs (a few hundred vertices) take its rounds.
     threads: bool,
 }
-
-/// The ring size from which [`Run::threads`] runs clip by mark-and-cut, and the nodes per
-/// chunk of its rounds: small, so that ears meet chunk boundaries often.
-const MARK_AND_CUT_FROM: usize = 16;
-const MARK_AND_CUT_CHUNK: usize = 8;
 
 impl fmt::Display for Run {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
@@ -111,12 +106,12 @@ fn triangulate(
     let mut out = Vec::new();
     let kept_all = if run.f32 {
         let vertices = input.vertices_f32();
-        with_triangulator(&TRI32, run.threads, |tri| {
+        with_triangulator(run.threads, |tri| {
             let report = tri.triangulate(&vertices, &input.ring_starts, &opts, &mut out)?;
             Ok(report.dropped.is_empty())
         })?
     } else {
-        with_triangulator(&TRI64, run.threads, |tri| {
+        with_triangulator(run.threads, |tri| {
             let report = tri.triangulate(&input.vertices, &input.ring_starts, &opts, &mut out)?;
             Ok(report.dropped.is_empty())
         })?
@@ -124,27 +119,14 @@ fn triangulate(
     Ok((out, kept_all))
 }
 
-thread_local! {
-    /// The triangulators of [`Run::threads`] runs, kept so that their thread pools are
-    /// started once per fuzzing thread, not once per input.
-    static TRI32: RefCell<Triangulator<f32>> = RefCell::new(with_mark_and_cut());
-    static TRI64: RefCell<Triangulator<f64>> = RefCell::new(with_mark_and_cut());
-}
-
-fn with_mark_and_cut<T: polytri::Coord>() -> Triangulator<T> {
-    let mut tri = Triangulator::new();
-    tri.set_mark_and_cut(MARK_AND_CUT_FROM, MARK_AND_CUT_CHUNK);
-    tri
-}
-
-/// Calls `f` with the kept triangulator of `kept` when `threads`, else with a new one.
-fn with_triangulator<T: polytri::Coord, R>(
-    kept: &'static std::thread::LocalKey<RefCell<Triangulator<T>>>,
+/// Calls `f` with this thread's kept two-thread triangulator when `threads`, else with a
+/// new one.
+fn with_triangulator<T: KeptCoord, R>(
     threads: bool,
     f: impl FnOnce(&mut Triangulator<T>) -> R,
 ) -> R {
     if threads {
-        kept.with(|tri| f(&mut tri.borrow_mut()))
+        threaded::with_kept(2, f)
     } else {
         f(&mut Triangulator::new())
     }

@@ -49,6 +49,7 @@ pub mod replay;
 pub mod series;
 pub mod shrink;
 pub mod strategy;
+pub mod threaded;
 
 pub use check::{
     check, check_fill, check_with, fill_area, fill_area_float, verify, verify_fill, CdtComparison,

@@ -179,3 +179,40 @@ fn peers_are_judged_by_the_same_oracle() {
         }
     }
 }
+
+#[test]
+fn runs_on_threads_are_judged_and_must_agree_across_thread_counts() {
+    // polytri on 2 threads (mark-and-cut from 16 nodes, in chunks of 8): judged, and equal
+    // to 3 threads
+    let mut threaded = config(24, &Family::ALL);
+    threaded.threads = 2;
+    let report = campaign::run(&threaded, &Polytri, &|_| {});
+    let failures: Vec<_> = report.failures.iter().map(|f| &f.runs).collect();
+    assert!(report.passed(), "{failures:?}");
+    let sequential = campaign::run(&config(24, &Family::ALL), &Polytri, &|_| {});
+    // one more run per case
+    assert_eq!(report.runs(), sequential.runs() + 24);
+
+    // A stand-in whose triangles depend on the thread count: caught by `threads_agree`,
+    // named after the threaded run, shrunk to a case that still fails so.
+    let rotates_on_three = |input: &Input, run: Run| {
+        let mut triangles = Polytri.triangulate(input, run)?;
+        if run.threads == 3 {
+            triangles.rotate_left(1);
+        }
+        Ok(triangles)
+    };
+    let mut broken = config(4, &[Family::Comb]);
+    broken.threads = 2;
+    let report = campaign::run(&broken, &rotates_on_three, &|_| {});
+    assert_eq!(report.failures.len(), 4);
+    for found in &report.failures {
+        assert_eq!(found.runs.len(), 1, "{:?}", found.runs);
+        let first = &found.runs[0];
+        assert_eq!(first.run, Run::on_threads(2));
+        assert_eq!(first.fault, Fault::Rejected(campaign::THREADS_AGREE.into()));
+        assert!(first.detail.contains("2 and 3 threads"), "{}", first.detail);
+        assert!(found.case.name.contains("_fast_f64_threads2_threads_agree"));
+        assert!(found.case.input.vertices.len() <= found.original_size.0);
+    }
+}

@@ -19,7 +19,7 @@ use crate::context::{
     lowest_net_arrives, net_boundary_counter_clockwise, Context, LoadedRing, NetEdge,
 };
 use crate::crossings::proof;
-use crate::crossings::proof::ProofScratch;
+use crate::crossings::proof::{Contact, ProofScratch};
 use crate::crossings::sweep::{self, Crossing, SweepScratch, Touch};
 use crate::geom::{cmp_xy, on_segment, orient2d, within_box, Orientation, Point};
 use crate::report::{DropReason, Dropped, RepairKind};
@@ -36,6 +36,9 @@ pub(crate) struct Scratch {
     flagged: Vec<NodeId>,
     /// Vertices the sweep found inside edges.
     touches: Vec<Touch>,
+    /// Nodes at shared positions, as the quick proof lists them (see
+    /// [`proof::edges_meet_at_vertices`]).
+    shared: Vec<NodeId>,
     /// The sweep's buffers; its order of the nodes by position is read afterwards.
     sweep: SweepScratch,
     /// The quick proof's buffers.
@@ -297,9 +300,10 @@ fn crossing_at_dropped_vertex(cx: &Context) -> bool {
 }
 
 /// Sweeps every live edge: crossings are errors in strict mode, repairs in lenient mode.
-/// With `prune`, first tries to prove that no two edges meet, which gives the same result
-/// faster; `Some(true)` says that no turn is collinear (see [`proof::edges_apart`]).
-/// Returns whether that proof succeeded: then no two nodes share a position either. With
+/// With `prune`, first tries to prove that no two edges meet, or meet only at vertices,
+/// which gives the same result faster; `Some(true)` says that no turn is collinear (see
+/// [`proof::edges_meet_at_vertices`]). Returns whether the edges were proved apart: then
+/// no two nodes share a position either. With
 /// `may_retry`, `None` when two edges cross at a vertex the filter dropped (see
 /// [`crossing_at_dropped_vertex`]) and straight vertices were not kept yet.
 fn sweep(
@@ -313,13 +317,32 @@ fn sweep(
         .extend(cx.rings.iter().filter(|r| r.alive).map(|r| r.start));
     s.touches.clear();
     cx.crossings.clear();
-    // Usually no two edges meet at all; proving that is cheaper than the sweep and gives
-    // its result: no touches, no crossings, and no shared positions to sort out (the order
-    // of `sweep.order` only matters for grouping equal positions).
+    // Usually no two edges meet at all, or only where rings touch at vertices; proving
+    // that is cheaper than the sweep and gives its result: no crossings, the touches, and
+    // the nodes at shared positions (the order of `sweep.order` only matters for grouping
+    // those).
     if let Some(turns_proper) = prune {
         let order = &mut s.sweep.order;
-        if proof::edges_apart(&cx.pool, &s.starts, &mut s.proof, order, turns_proper) {
-            return Ok(Some(true));
+        let (touches, shared) = (&mut s.touches, &mut s.shared);
+        let pool = &cx.pool;
+        let proof = &mut s.proof;
+        match proof::edges_meet_at_vertices(
+            pool,
+            &s.starts,
+            proof,
+            order,
+            turns_proper,
+            touches,
+            shared,
+        ) {
+            Contact::Apart => return Ok(Some(true)),
+            Contact::AtVertices => {
+                // (copied, not swapped: each buffer keeps the capacity it needs)
+                order.clear();
+                order.extend_from_slice(shared);
+                return Ok(Some(false));
+            }
+            Contact::NotProved => {}
         }
     }
     sweep::sweep(

@@ -5,29 +5,59 @@
 //! keeps it current as it adds bridges. Whatever relinks nodes in between (`touch`
 //! joining rings where they meet, `clean` relinking rings as loaded) calls
 //! [`EdgeIndex::invalidate`], and the next [`EdgeIndex::ensure`] rebuilds it.
+//!
+//! A few edges asked a few questions (a glyph's hole or two) are not worth a grid:
+//! [`EdgeIndex::ensure`] then only lists the edges, and [`EdgeIndex::query`] hands
+//! out all of them. Every caller tests what it gets exactly, so either answer is right.
 
 use super::Ring;
 use crate::geom::Point;
-use crate::structures::{EdgeGrid, Pool};
+use crate::structures::{EdgeGrid, NodeId, Pool};
 
-/// The edges of the live rings in a grid, and whether that grid is current.
+/// The edges of the live rings in a grid (or only listed, when few), and whether that
+/// index is current.
 #[derive(Debug, Default)]
 pub(crate) struct EdgeIndex {
     grid: EdgeGrid,
     current: bool,
+    /// Every edge by its start node, instead of the grid (see [`EdgeIndex::ensure`]).
+    listed: bool,
+    edges: Vec<NodeId>,
 }
 
+/// [`EdgeIndex::ensure`] lists the edges, without a grid, while their number times
+/// the questions to come is at most this: a scan of every edge per question then costs
+/// less than building the grid (measured on glyphs: an outer ring with a hole or two).
+const DIRECT_WORK: usize = 384;
+
 impl EdgeIndex {
-    /// Rebuilds the index unless it lists the rings as they are linked now.
-    pub fn ensure(&mut self, pool: &Pool, rings: &[Ring]) {
+    /// Rebuilds the index unless it lists the rings as they are linked now, for about
+    /// `questions` queries to come: when the edges are few, they are only listed (and
+    /// every query hands out all of them).
+    pub fn ensure(&mut self, pool: &Pool, rings: &[Ring], questions: usize) {
         if !self.current {
-            self.rebuild(pool, rings);
+            self.list(pool, rings, questions);
         }
-        debug_assert!(self.lists_every_edge(pool, rings));
+        debug_assert!(self.listed || self.lists_every_edge(pool, rings));
     }
 
-    /// Lists every live edge of the live rings again.
+    /// Lists the edges if they are few for `questions` queries (see [`DIRECT_WORK`]),
+    /// else builds the grid.
+    fn list(&mut self, pool: &Pool, rings: &[Ring], questions: usize) {
+        self.edges.clear();
+        for ring in rings.iter().filter(|r| r.alive) {
+            self.edges.extend(pool.ring(ring.start));
+            if self.edges.len().saturating_mul(questions) > DIRECT_WORK {
+                return self.rebuild(pool, rings);
+            }
+        }
+        self.listed = true;
+        self.current = true;
+    }
+
+    /// Lists every live edge of the live rings again, in the grid.
     pub fn rebuild(&mut self, pool: &Pool, rings: &[Ring]) {
+        self.listed = false;
         let mut lo = Point::new(f64::INFINITY, f64::INFINITY);
         let mut hi = Point::new(f64::NEG_INFINITY, f64::NEG_INFINITY);
         let mut edges = 0;
@@ -63,15 +93,49 @@ impl EdgeIndex {
         self.current
     }
 
-    /// The grid, to query. Current unless the caller relinked nodes since building it.
+    /// The grid, to query. Current unless the caller relinked nodes since building it,
+    /// and built by [`EdgeIndex::rebuild`], not only listed.
     pub fn grid(&self) -> &EdgeGrid {
+        debug_assert!(!self.listed, "the edges are only listed");
         &self.grid
     }
 
-    /// The grid, for a caller that relinks nodes and updates the grid alike, so that it
-    /// stays current (bridges added, holes reversed).
-    pub fn grid_mut(&mut self) -> &mut EdgeGrid {
-        &mut self.grid
+    /// After rings were reversed: the edge listed under node `n` now starts at
+    /// `renamed(n)` (the listed edges need nothing: every node still starts one).
+    pub fn rename(&mut self, renamed: impl Fn(NodeId) -> NodeId) {
+        if !self.listed {
+            self.grid.rename(renamed);
+        }
+    }
+
+    /// Whether the edges are only listed, without a grid (see [`EdgeIndex::ensure`]).
+    pub fn listed(&self) -> Option<&[NodeId]> {
+        self.listed.then_some(&self.edges[..])
+    }
+
+    /// The edges (by start node) whose boxes may meet the box `lo..=hi`: those the grid
+    /// lists there, or every edge when they are only listed.
+    pub fn query(&self, lo: Point, hi: Point) -> impl Iterator<Item = NodeId> + '_ {
+        let (listed, grid) = if self.listed {
+            (&self.edges[..], None)
+        } else {
+            (&[][..], Some(self.grid.query(lo, hi)))
+        };
+        listed.iter().copied().chain(grid.into_iter().flatten())
+    }
+
+    /// Lists the edge now starting at `n` (a new node, or one whose successor changed)
+    /// from `a` to `b`, keeping the index current.
+    pub fn insert(&mut self, n: NodeId, a: Point, b: Point) {
+        if self.listed {
+            // listed by start node: a node already there needs no second entry (and the
+            // list is short)
+            if !self.edges.contains(&n) {
+                self.edges.push(n);
+            }
+        } else {
+            self.grid.insert(n, a, b);
+        }
     }
 
     /// Whether the grid lists every edge of the live rings under the node it starts at,

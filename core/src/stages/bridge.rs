@@ -19,9 +19,11 @@
 //! one that has M on its inner side (Fig. 6a/b): with every ring's interior on the left,
 //! only upward edges with M strictly left of them count.
 //!
-//! All decisions are exact orientation tests. The searches use the edge grid of `grid`: the
-//! ray walks one row of cells from M and stops past its nearest hit, the triangle search
-//! looks at the cells of the triangle's box, so a hole costs a few cells, not the polygon.
+//! All decisions are exact orientation tests. The searches use the edge index of
+//! `context`: in its grid the ray walks one row of cells from M and stops past its nearest
+//! hit, the triangle search looks at the cells of the triangle's box, so a hole costs a
+//! few cells, not the polygon; a few edges with a hole or two are only listed, and every
+//! search looks at all of them.
 
 use core::cmp::Ordering;
 
@@ -68,7 +70,7 @@ pub(crate) fn bridge(
     if s.order.is_empty() {
         return Ok(());
     }
-    cx.edge_index.ensure(&cx.pool, &cx.rings);
+    cx.edge_index.ensure(&cx.pool, &cx.rings, s.order.len());
     let (pool, rings) = (&cx.pool, &cx.rings);
     s.order.sort_unstable_by(|&a, &b| {
         let (pa, pb) = (
@@ -219,7 +221,6 @@ fn bridge_leaves_polygon(cx: &Context, m: NodeId, x: NodeId) -> bool {
     let lo = Point::new(pm.x.min(px.x), pm.y.min(px.y));
     let hi = Point::new(pm.x.max(px.x), pm.y.max(px.y));
     cx.edge_index
-        .grid()
         .query(lo, hi)
         .any(|e| is_merged(cx, e) && crate::geom::crosses(pm, px, pool.p(e), pool.p(pool.next(e))))
 }
@@ -236,7 +237,7 @@ enum Target {
 /// Lists the current edge starting at `n` in the grid index again.
 fn register(cx: &mut Context, n: NodeId) {
     let (a, b) = (cx.pool.p(n), cx.pool.p(cx.pool.next(n)));
-    cx.edge_index.grid_mut().insert(n, a, b);
+    cx.edge_index.insert(n, a, b);
 }
 
 /// Whether node `n` is on a ring that is merged already (and still linked).
@@ -253,7 +254,7 @@ fn is_merged(cx: &Context, n: NodeId) -> bool {
 fn find_touching(cx: &Context, m: NodeId) -> Option<NodeId> {
     let pm = cx.pool.p(m);
     let (mn, mp) = (cx.pool.p(cx.pool.next(m)), cx.pool.p(cx.pool.prev(m)));
-    cx.edge_index.grid().query(pm, pm).find(|&x| {
+    cx.edge_index.query(pm, pm).find(|&x| {
         if !is_merged(cx, x) || cx.pool.p(x) != pm {
             return false;
         }
@@ -310,8 +311,14 @@ fn find_hole_bridge(cx: &Context, m: NodeId) -> Option<NodeId> {
 /// edge ends within the columns walked, no later edge can be hit nearer (columns are
 /// monotone in x), and the walk stops.
 fn nearest_hit(cx: &Context, pm: Point) -> Option<(NodeId, NodeId)> {
-    let grid = &cx.edge_index.grid();
     let mut best = None;
+    if let Some(edges) = cx.edge_index.listed() {
+        for &a in edges {
+            consider_hit(cx, pm, a, &mut best);
+        }
+        return best;
+    }
+    let grid = &cx.edge_index.grid();
     let row = grid.row(pm.y);
     let east = Point::new(f64::INFINITY, pm.y);
     for a in grid.long(pm, east).chain(grid.row_list(row)) {
@@ -373,7 +380,7 @@ fn least_angle_in_triangle(
     let mut best = p;
     let box_lo = Point::new(pm.x, ylo);
     let box_hi = Point::new(pa.x.max(pb.x), yhi);
-    for r in cx.edge_index.grid().query(box_lo, box_hi) {
+    for r in cx.edge_index.query(box_lo, box_hi) {
         // the position first: most candidates fail there, without a look at their ring
         let node = cx.pool.get(r);
         let q = node.p;
@@ -410,7 +417,7 @@ fn least_angle_in_triangle(
 /// the node whose corner holds M is of the polygon around M.
 fn visible_node_at(cx: &Context, target: Point, pm: Point, component: u32) -> Option<NodeId> {
     let (mut on_side, mut fallback, mut elsewhere, mut tip) = (None, None, None, None);
-    for x in cx.edge_index.grid().query(target, target) {
+    for x in cx.edge_index.query(target, target) {
         let node = cx.pool.get(x);
         if node.removed || node.p != target || !cx.rings[node.ring as usize].merged {
             continue;

@@ -98,7 +98,7 @@ pub(crate) fn nest(cx: &mut Context, s: &mut Scratch, nesting: Nesting) -> Resul
         // the edge grid `compute_depths` built stays of use to `bridge`: in a reversed
         // ring, the edge listed as n (to its old successor) now starts at that node
         let (pool, rings) = (&cx.pool, &cx.rings);
-        cx.edge_index.grid_mut().rename(|n| {
+        cx.edge_index.rename(|n| {
             let node = pool.get(n);
             if rings[node.ring as usize].depth % 2 == 1 {
                 node.prev

@@ -224,24 +224,17 @@ impl<'a> Clipper<'a> {
         start: NodeId,
         avoid_crossed: bool,
     ) -> (Self, NodeId) {
-        let start = remove_walls(cx, start);
-        s.reflex.clear();
-        let mut len = 0;
-        let mut n = start;
-        loop {
-            let reflex = turn(cx, n) != Orientation::CounterClockwise;
-            cx.pool.get_mut(n).reflex = reflex;
-            // a reflex tip is no ear: the walk steps over it at once
-            cx.pool.get_mut(n).not_ear = reflex;
-            if reflex {
-                s.reflex.push((n, cx.pool.p(n)));
-            }
-            len += 1;
-            n = cx.pool.next(n);
-            if n == start {
-                break;
-            }
+        // Walls and repeats come only from bridging and joining touching rings: the
+        // classifying walk looks for them on the way, and only a ring that has some is
+        // tidied (and walked again).
+        // (from the node `remove_walls` ends a lap at when it removes nothing)
+        let mut from = cx.pool.prev(start);
+        let (mut len, walls) = classify(cx, s, from);
+        if walls {
+            from = remove_walls(cx, start);
+            (len, _) = classify(cx, s, from);
         }
+        let start = from;
         let reflex_count = s.reflex.len();
         let indexed = reflex_count >= GRID_MIN_REFLEX;
         if indexed {
@@ -855,6 +848,36 @@ impl<'a> Clipper<'a> {
         Error::LobesWindOpposite {
             ring: self.cx.rings[node.ring as usize].input as usize,
             vertex: node.vertex as usize,
+        }
+    }
+}
+
+/// Marks every node of the ring through `start` reflex or not (and reflex ones "not an
+/// ear") and lists the reflex ones in `s.reflex`; returns the ring's length and whether
+/// [`remove_walls`] would remove anything (a repeated position or a wall's tip). One pass
+/// with the three positions of each turn carried along.
+fn classify(cx: &mut Context, s: &mut Scratch, start: NodeId) -> (usize, bool) {
+    s.reflex.clear();
+    let pool = &mut cx.pool;
+    let (mut len, mut walls) = (0, false);
+    let mut n = start;
+    let (mut pp, mut pn) = (pool.p(pool.prev(n)), pool.p(n));
+    loop {
+        let next = pool.next(n);
+        let px = pool.p(next);
+        walls |= pn == px || pp == px;
+        let reflex = orient2d(pp, pn, px) != Orientation::CounterClockwise;
+        let node = pool.get_mut(n);
+        node.reflex = reflex;
+        // a reflex tip is no ear: the walk steps over it at once
+        node.not_ear = reflex;
+        if reflex {
+            s.reflex.push((n, pn));
+        }
+        len += 1;
+        (pp, pn, n) = (pn, px, next);
+        if n == start {
+            return (len, walls);
         }
     }
 }

@@ -513,12 +513,12 @@ fn collect_shared(cx: &mut Context, s: &mut Scratch, first_split: usize) {
 /// Finds ring `r`'s rightmost vertex and makes the ring counter-clockwise.
 fn orient_ring(cx: &mut Context, s: &mut Scratch, r: usize) {
     let start = cx.rings[r].start;
-    let mut best = start;
+    let (mut best, mut b) = (start, cx.pool.p(start));
     let mut visits = 0;
     for n in cx.pool.ring(start) {
-        let (p, b) = (cx.pool.p(n), cx.pool.p(best));
+        let p = cx.pool.p(n);
         if p.x > b.x || (p.x == b.x && p.y < b.y) {
-            (best, visits) = (n, 1);
+            (best, b, visits) = (n, p, 1);
         } else if p == b {
             visits += 1;
         }

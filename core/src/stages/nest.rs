@@ -362,7 +362,8 @@ fn depth_by_dropped(cx: &mut Context, s: &mut Scratch, b: usize) -> u32 {
         }
         let p = cx.pool.nodes[i].p;
         let mut slot = core::mem::take(&mut s.ring_slot);
-        rings_through(cx, b, p, &mut through, &mut slot);
+        // (a dropped vertex: no edge was split there, so the grid's)
+        rings_through(cx, b, p, false, &mut through, &mut slot);
         clear_slots(&through, &mut slot);
         through.sort_unstable();
         counts.clear();
@@ -412,10 +413,33 @@ const HUB_DETOUR: usize = 16;
 /// How many nodes lie at position `p`, when several do (`cx.shared` lists those, sorted
 /// by position); 0 when at most one does.
 fn nodes_at(cx: &Context, p: Point) -> usize {
+    shared_at(cx, p).len()
+}
+
+/// The nodes at position `p` when several lie there (from `cx.shared`); none otherwise.
+fn shared_at(cx: &Context, p: Point) -> &[NodeId] {
     let (pool, shared) = (&cx.pool, &cx.shared);
     let from = shared.partition_point(|&n| cmp_xy(pool.p(n), p) == Ordering::Less);
     let rest = &shared[from..];
-    rest.partition_point(|&n| cmp_xy(pool.p(n), p) == Ordering::Equal)
+    &rest[..rest.partition_point(|&n| cmp_xy(pool.p(n), p) == Ordering::Equal)]
+}
+
+/// The edges (by start node) through position `p`, and maybe some more. At a live node's
+/// position (`at_vertex`) without crossings, an edge through it ends there (`clean` split
+/// every edge at the live vertices lying inside it), at a node sharing the position: the
+/// edges at the nodes of `cx.shared` there, found by a binary search however many edges
+/// lie near (a grid cell holds many where vertices crowd together, as the tips of a
+/// pinwheel's wedges on their circle). Elsewhere, the edge grid's.
+fn edges_through(cx: &Context, p: Point, at_vertex: bool) -> impl Iterator<Item = NodeId> + '_ {
+    let (listed, grid) = if at_vertex && cx.crossings.is_empty() {
+        (shared_at(cx, p), None)
+    } else {
+        (&[][..], Some(cx.edge_index.grid().query(p, p)))
+    };
+    let pool = &cx.pool;
+    (listed.iter())
+        .flat_map(move |&m| [m, pool.prev(m)])
+        .chain(grid.into_iter().flatten())
 }
 
 /// The pool indices of the nodes loaded for ring `r`, in input order; none for a ring
@@ -438,9 +462,16 @@ const NO_SLOT: u32 = u32::MAX;
 /// order the grid lists them. `slot` must hold [`NO_SLOT`] for every ring; it is left
 /// holding each listed ring's place in `out` (see [`clear_slots`]), so that a position
 /// many rings pass costs time linear in them.
-fn rings_through(cx: &Context, b: usize, p: Point, out: &mut Vec<u32>, slot: &mut [u32]) {
+fn rings_through(
+    cx: &Context,
+    b: usize,
+    p: Point,
+    at_vertex: bool,
+    out: &mut Vec<u32>,
+    slot: &mut [u32],
+) {
     out.clear();
-    for n in cx.edge_index.grid().query(p, p) {
+    for n in edges_through(cx, p, at_vertex) {
         let node = cx.pool.get(n);
         let ring = node.ring;
         if ring as usize == b || node.removed || !cx.rings[ring as usize].alive {
@@ -482,7 +513,7 @@ fn decide_at(cx: &mut Context, s: &mut Scratch, b: usize, v: NodeId) -> u32 {
     // Rings passing through V: decided locally, their windings kept apart.
     let mut touching = core::mem::take(&mut s.order);
     let mut slot = core::mem::take(&mut s.ring_slot);
-    rings_through(cx, b, pv, &mut touching, &mut slot);
+    rings_through(cx, b, pv, true, &mut touching, &mut slot);
     s.order = touching;
     s.ring_slot = slot;
     if s.order.is_empty() && v == cx.rings[b].rightmost && cx.crossings.is_empty() {
@@ -539,7 +570,7 @@ fn decide_listed(
     // ring's edge through v
     let (vn, vp) = (cx.pool.p(cx.pool.next(v)), cx.pool.p(cx.pool.prev(v)));
     let mut shared = [false; 2];
-    for n in cx.edge_index.grid().query(pv, pv) {
+    for n in edges_through(cx, pv, true) {
         let node = cx.pool.get(n);
         let (k, next) = (slot[node.ring as usize], cx.pool.p(node.next));
         if node.removed || !on_segment(node.p, next, pv) {

@@ -56,6 +56,12 @@ pub(crate) struct Scratch {
     order: Vec<u32>,
     /// The rays of `check_shared_positions`.
     touch_nets: Vec<(Point, i32)>,
+    /// [`decide_hub`]: the corners at the hub (start direction, end direction, ring), the
+    /// ends of the corners in angular order (direction, corner, whether it starts there),
+    /// and how many corners hold each one.
+    hub_corners: Vec<(Point, Point, u32)>,
+    hub_ends: Vec<(Point, u32, bool)>,
+    hub_inner: Vec<u32>,
 }
 
 /// An edge through the position being decided, of a ring listed there: the ring's place
@@ -209,7 +215,13 @@ fn compute_depths(cx: &mut Context, s: &mut Scratch) -> Result<(), Error> {
     let (pool, rings) = (&cx.pool, &cx.rings);
     let x = |r: u32| pool.p(rings[r as usize].rightmost).x;
     order.sort_unstable_by(|&a, &b| x(b).total_cmp(&x(a)).then(a.cmp(&b)));
+    if !cx.lenient && cx.crossings.is_empty() {
+        decide_hubs(cx, s);
+    }
     for &r in &order {
+        if s.depth_known[r as usize] {
+            continue; // decided at a hub
+        }
         cx.rings[r as usize].depth = depth_of(cx, s, r as usize);
         s.depth_known[r as usize] = true;
     }
@@ -232,6 +244,98 @@ fn compute_depths(cx: &mut Context, s: &mut Scratch) -> Result<(), Error> {
         }
         _ => Ok(()),
     }
+}
+
+/// Strict mode, no crossings: the rings through each position where more than
+/// [`FEW_AT_A_HUB`] nodes lie, decided there all at once (see [`decide_hub`]).
+fn decide_hubs(cx: &mut Context, s: &mut Scratch) {
+    let mut i = 0;
+    while i < cx.shared.len() {
+        let end = cx.same_position_end(i);
+        if end - i > FEW_AT_A_HUB {
+            decide_hub(cx, s, i, end);
+        }
+        i = end;
+    }
+}
+
+/// The depths of the rings through a hub H (the nodes `cx.shared[from..to]`), when each
+/// passes it once and no two of their edges there point the same way; else nothing.
+///
+/// Valid rings do not cross, so near H each ring's corner there (its interior, swept
+/// counter-clockwise from its edge out to its edge in: every ring is counter-clockwise
+/// here) and another's are apart or one holds the other. A ring through H contains ring
+/// q exactly when its corner holds q's; a ring not through H contains q exactly when it
+/// contains H, and counting those is one winding number. Sorting the corners' ends round
+/// H and sweeping them once counts, for every corner, the corners holding it: those open
+/// where it starts. Rings deciding each other this way cost time in their number once,
+/// where [`depth_of`] would look at all of them for each (a pinwheel's wedges, a pie's
+/// slices). Input whose corners cross is refused later by `check_shared_positions`
+/// whatever depths it gets here.
+fn decide_hub(cx: &mut Context, s: &mut Scratch, from: usize, to: usize) {
+    let pool = &cx.pool;
+    let h = pool.p(cx.shared[from]);
+    let mut corners = core::mem::take(&mut s.hub_corners);
+    let mut ends = core::mem::take(&mut s.hub_ends);
+    let mut inner = core::mem::take(&mut s.hub_inner);
+    let mut order = core::mem::take(&mut s.order);
+    corners.clear();
+    ends.clear();
+    order.clear();
+    let mut once = true;
+    for &m in &cx.shared[from..to] {
+        let node = pool.get(m);
+        let ring = node.ring as usize;
+        // (rings already decided at another hub count here too: they may hold the others)
+        if node.removed || !cx.rings[ring].alive {
+            continue;
+        }
+        // each ring once (its slot marks it)
+        once &= s.ring_slot[ring] == NO_SLOT;
+        s.ring_slot[ring] = corners.len() as u32;
+        corners.push((pool.p(node.next), pool.p(node.prev), ring as u32));
+        order.push(ring as u32);
+    }
+    for (k, &(out, into, _)) in corners.iter().enumerate() {
+        ends.push((out, k as u32, true));
+        ends.push((into, k as u32, false));
+    }
+    ends.sort_unstable_by(|a, b| cmp_around(h, a.0, b.0));
+    let apart = ends
+        .windows(2)
+        .all(|w| cmp_around(h, w[0].0, w[1].0) != Ordering::Equal);
+    if once && apart && !corners.is_empty() {
+        // the rings not through H around it (the hub's own edges count apart)
+        let mut beyond = core::mem::take(&mut s.touch_winding);
+        beyond.clear();
+        beyond.resize(order.len(), 0);
+        let mut along = core::mem::take(&mut s.along_seen);
+        let b = order[0] as usize;
+        let (winding, _) = winding_number(cx, b, h, &mut beyond, &s.ring_slot, &mut along);
+        s.along_seen = along;
+        s.touch_winding = beyond;
+        // the corners holding the ray's start (+x) are open from the beginning
+        let mut open = (corners.iter())
+            .filter(|&&(out, into, _)| cmp_around(h, out, into) == Ordering::Greater)
+            .count() as u32;
+        inner.clear();
+        inner.resize(corners.len(), 0);
+        for &(_, k, starts) in &ends {
+            if starts {
+                inner[k as usize] = open;
+                open += 1;
+            } else {
+                open = open.saturating_sub(1);
+            }
+        }
+        for (k, &(_, _, ring)) in corners.iter().enumerate() {
+            cx.rings[ring as usize].depth = winding.max(0) as u32 + inner[k];
+            s.depth_known[ring as usize] = true;
+        }
+    }
+    clear_slots(&order, &mut s.ring_slot);
+    order.clear();
+    (s.hub_corners, s.hub_ends, s.hub_inner, s.order) = (corners, ends, inner, order);
 }
 
 /// [`direct_depths`] decides rings that meet nowhere while their number times their edges
@@ -1078,6 +1182,85 @@ mod tests {
         let outside = square(8.0, 8.0, 2.0, true);
         let got = depths(&[&outer, &outside], Nesting::Auto, false);
         assert_eq!(got, Ok(vec![Some((0, false)), Some((0, false))]));
+    }
+
+    /// The rings containing each triangle (h, a, b) of `rings`, at a point just inside its
+    /// edge a–b (off any triangle nested in it, which reaches less far from h), by a
+    /// plain crossing test: the expected depths, independent of the stage.
+    fn brute_depths(rings: &[Vec<[f64; 2]>]) -> Vec<u32> {
+        let inside = |ring: &[[f64; 2]], p: [f64; 2]| {
+            let mut odd = false;
+            for (k, a) in ring.iter().enumerate() {
+                let b = ring[(k + 1) % ring.len()];
+                if (a[1] > p[1]) != (b[1] > p[1])
+                    && p[0] < a[0] + (p[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1])
+                {
+                    odd = !odd;
+                }
+            }
+            odd
+        };
+        (0..rings.len())
+            .map(|i| {
+                let r = &rings[i];
+                let mid = [(r[1][0] + r[2][0]) / 2.0, (r[1][1] + r[2][1]) / 2.0];
+                let c = [
+                    mid[0] + (r[0][0] - mid[0]) * 0.01,
+                    mid[1] + (r[0][1] - mid[1]) * 0.01,
+                ];
+                (0..rings.len())
+                    .filter(|&j| j != i && inside(&rings[j], c))
+                    .count() as u32
+            })
+            .collect()
+    }
+
+    #[test]
+    fn many_rings_through_one_point_are_decided_there_at_once() {
+        // Inside a square, a square hole, an island in it: the hub (20, 20) lies inside
+        // three rings. Through the hub: 12 thin wedges, every third with a smaller wedge
+        // inside it, and a wedge round the +x direction (where the sweep starts) with one
+        // inside it on either side: 19 rings through one point, decided there at once.
+        let (h, tau) = ([20.0, 20.0], core::f64::consts::TAU);
+        let at = |angle: f64, r: f64| [h[0] + r * angle.cos(), h[1] + r * angle.sin()];
+        let mut rings = vec![
+            vec![[0.0, 0.0], [40.0, 0.0], [40.0, 40.0], [0.0, 40.0]],
+            vec![[2.0, 2.0], [38.0, 2.0], [38.0, 38.0], [2.0, 38.0]],
+            vec![[4.0, 4.0], [36.0, 4.0], [36.0, 36.0], [4.0, 36.0]],
+        ];
+        let wedge = |from: f64, to: f64, r: f64| vec![h, at(from, r), at(to, r)];
+        for i in 0..12 {
+            let t = (f64::from(i) + 1.0) * tau / 14.0;
+            rings.push(wedge(t, t + 0.2, 10.0));
+            if i % 3 == 0 {
+                rings.push(wedge(t + 0.05, t + 0.15, 6.0));
+            }
+        }
+        rings.push(wedge(-0.15, 0.15, 12.0));
+        rings.push(wedge(-0.1, -0.02, 8.0));
+        rings.push(wedge(0.02, 0.1, 8.0));
+        // the first three rings are squares: their depths by hand
+        let mut want = vec![0, 1, 2];
+        want.extend(
+            &brute_depths(&rings[3..])
+                .iter()
+                .map(|d| d + 3)
+                .collect::<Vec<_>>(),
+        );
+        assert!(want.contains(&4) && want.contains(&3));
+        for quarter_turns in 0..4 {
+            let turned: Vec<Vec<[f64; 2]>> = (rings.iter())
+                .map(|ring| {
+                    (ring.iter())
+                        .map(|&p| (0..quarter_turns).fold(p, |[x, y], _| [-y, x]))
+                        .collect()
+                })
+                .collect();
+            let refs: Vec<&[[f64; 2]]> = turned.iter().map(Vec::as_slice).collect();
+            let got = depths(&refs, Nesting::Auto, false).expect("valid");
+            let got: Vec<u32> = got.iter().map(|d| d.map_or(u32::MAX, |d| d.0)).collect();
+            assert_eq!(got, want, "{quarter_turns} quarter turns");
+        }
     }
 
     #[test]

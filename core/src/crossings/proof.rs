@@ -782,8 +782,8 @@ mod tests {
             .collect()
     }
 
-    /// Whether `edges_meet_at_vertices` proves the edges apart, without assumptions; where no turn is collinear, also with
-    /// `turns_proper`, which must agree.
+    /// Whether `edges_meet_at_vertices` proves the edges apart, without assumptions;
+    /// where no turn is collinear, also with `turns_proper`, which must agree.
     fn apart(rings: &[&[(f64, f64)]]) -> bool {
         let (pool, starts) = build(rings);
         let mut nodes = Vec::new();

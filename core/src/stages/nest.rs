@@ -1241,12 +1241,7 @@ mod tests {
         rings.push(wedge(0.02, 0.1, 8.0));
         // the first three rings are squares: their depths by hand
         let mut want = vec![0, 1, 2];
-        want.extend(
-            &brute_depths(&rings[3..])
-                .iter()
-                .map(|d| d + 3)
-                .collect::<Vec<_>>(),
-        );
+        want.extend(brute_depths(&rings[3..]).into_iter().map(|d| d + 3));
         assert!(want.contains(&4) && want.contains(&3));
         for quarter_turns in 0..4 {
             let turned: Vec<Vec<[f64; 2]>> = (rings.iter())

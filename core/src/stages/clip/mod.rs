@@ -65,8 +65,10 @@ const WALK_STEPS_MIN: usize = 256;
 /// Reusable buffers of the clip stage.
 #[derive(Debug, Default)]
 pub(crate) struct Scratch {
-    /// Reflex (or straight) nodes of the polygon being clipped; entries go stale when a node
-    /// turns convex or is cut, and are skipped then.
+    /// Reflex (or straight) nodes of the polygon being clipped. With the grid, entries go
+    /// stale when a node turns convex or is cut (the grid forgets it, the list is not read
+    /// again but to find the last reflex node); without it, such a node leaves the list at
+    /// once, so that every entry an ear test scans is live.
     reflex: Vec<(NodeId, Point)>,
     /// The same nodes by grid cell, when there are many (see `GRID_MIN_REFLEX`).
     cells: Cells,
@@ -618,8 +620,13 @@ impl<'a> Clipper<'a> {
             })
         } else {
             // positions are listed with the nodes: most fail the box test without a look
-            // at the node
-            (self.s.reflex.iter()).any(|&(r, q)| near(q) && live(r) && test(r, q))
+            // at the node (every entry is live: see `Scratch::reflex`)
+            (self.s.reflex.iter()).any(|&(r, q)| {
+                near(q) && {
+                    debug_assert!(live(r), "a stale reflex entry");
+                    test(r, q)
+                }
+            })
         }
     }
 
@@ -647,27 +654,11 @@ impl<'a> Clipper<'a> {
             self.tidy(a);
             self.tidy(c);
         }
-        self.forget_stale_reflex();
         if self.cx.pool.get(c).removed {
             self.cx.pool.next(a)
         } else {
             c
         }
-    }
-
-    /// Without the grid, ear tests scan `Scratch::reflex`, whose entries go stale as reflex
-    /// nodes turn convex: once most are stale, keep only the live ones (in their order, so
-    /// every scan finds what it found before). Amortized constant time per cut.
-    fn forget_stale_reflex(&mut self) {
-        let reflex = &mut self.s.reflex;
-        if self.indexed || reflex.len() <= 2 * self.reflex_count + 8 {
-            return;
-        }
-        let pool = &self.cx.pool;
-        reflex.retain(|&(r, _)| {
-            let node = pool.get(r);
-            !node.removed && node.reflex
-        });
     }
 
     /// `n` if it is live, else the first live node its links lead to: a removed node keeps
@@ -786,10 +777,14 @@ impl<'a> Clipper<'a> {
         }
     }
 
-    /// Takes a node that is no longer reflex (or no longer linked) out of the grid.
+    /// Takes a node that is no longer reflex (or no longer linked) out of the grid, or out
+    /// of the list the ear tests scan without one (a few dozen entries at most: finding
+    /// and removing it costs less than scanning past it in every later test).
     fn unindex(&mut self, n: NodeId) {
         if self.indexed {
             self.s.cells.remove(n);
+        } else if let Some(at) = self.s.reflex.iter().position(|&(r, _)| r == n) {
+            self.s.reflex.remove(at);
         }
     }
 

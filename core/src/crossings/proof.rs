@@ -345,6 +345,7 @@ fn scan(
     if n <= TINY && n * n.saturating_sub(1) / 2 <= budget {
         scan_pairs(&scratch.boxes, visit)
     } else if n <= SMALL {
+        sweep_along_shorter_extents(&mut scratch.boxes);
         sort_by_left(&mut scratch.boxes, &mut scratch.merged, &mut scratch.runs);
         scan_sorted(&scratch.boxes, budget, visit)
     } else if collect_chains(pool, &scratch.boxes, &mut scratch.chains) {
@@ -497,6 +498,48 @@ fn scan_chains(
         }
         Scan::Done
     })
+}
+
+/// Swaps x and y in every box where that makes the sorted scan compare fewer pairs. The
+/// scan compares each box with those starting before it ends along the sorting axis:
+/// about the boxes' extents along that axis over the spread of their positions, summed.
+/// The spread is the standard deviation of the boxes' centres, not the range, which one
+/// long edge can stretch (a coastline's frame around islands crowded into a strip); the
+/// axis with the smaller sum of extents over spread wins (on the glyph pages and earcut's
+/// fixtures, 20–43% fewer pairs than always sorting by x). A heuristic in floating point:
+/// the visitors read positions from the pool, so only the scan sees the swap.
+fn sweep_along_shorter_extents(boxes: &mut [EdgeBox]) -> bool {
+    let Some(first) = boxes.first() else {
+        return false;
+    };
+    // centres relative to the first box's (doubled), so that large coordinates with a
+    // small spread keep their digits
+    let (ox, oy) = (first.x0 + first.x1, first.y0 + first.y1);
+    let (mut widths, mut heights) = (0.0, 0.0);
+    let (mut sx, mut sxx, mut sy, mut syy) = (0.0, 0.0, 0.0, 0.0);
+    for b in boxes.iter() {
+        widths += b.x1 - b.x0;
+        heights += b.y1 - b.y0;
+        let (cx, cy) = (b.x0 + b.x1 - ox, b.y0 + b.y1 - oy);
+        (sx, sxx, sy, syy) = (sx + cx, sxx + cx * cx, sy + cy, syy + cy * cy);
+    }
+    let n = boxes.len() as f64;
+    // n² times the variances of the (doubled) centres
+    let (vx, vy) = (n * sxx - sx * sx, n * syy - sy * sy);
+    // heights / √vy < widths / √vx, squared
+    let swap = heights * heights * vx < widths * widths * vy;
+    if swap {
+        for b in boxes.iter_mut() {
+            *b = EdgeBox {
+                x0: b.y0,
+                x1: b.y1,
+                y0: b.x0,
+                y1: b.x1,
+                ..*b
+            };
+        }
+    }
+    swap
 }
 
 /// Sorts boxes by their left sides: a natural merge sort, since in ring order the left
@@ -987,6 +1030,50 @@ mod tests {
     }
 
     #[test]
+    fn the_sorted_scan_runs_along_the_shorter_extents() {
+        // Islands in a column overlap each other along x, not along y: their boxes swap
+        // axes; in a row they keep them. A square frame round them changes nothing (its
+        // range is the same both ways; the spread of the islands decides).
+        let island = |x: f64, y: f64| {
+            let top = [(x + 4.0, y + 9.0), (x + 2.0, y + 12.0), (x, y + 9.0)];
+            [vec![(x, y), (x + 4.0, y)], top.to_vec()].concat()
+        };
+        let column: Vec<_> = (0..8).map(|i| island(0.0, f64::from(i) * 20.0)).collect();
+        let row: Vec<_> = (0..8).map(|i| island(f64::from(i) * 20.0, 0.0)).collect();
+        let framed = |mut rings: Vec<Vec<(f64, f64)>>| {
+            rings.push(vec![
+                (-200.0, -200.0),
+                (200.0, -200.0),
+                (200.0, 200.0),
+                (-200.0, 200.0),
+            ]);
+            rings
+        };
+        for (rings, swapped) in [
+            (column.clone(), true),
+            (row.clone(), false),
+            (framed(column), true),
+            (framed(row), false),
+        ] {
+            let refs: Vec<&[(f64, f64)]> = rings.iter().map(Vec::as_slice).collect();
+            let (pool, starts) = build(&refs);
+            let mut boxes = Vec::new();
+            collect_boxes(&pool, &starts, &mut boxes, None);
+            let before = boxes.clone();
+            assert_eq!(sweep_along_shorter_extents(&mut boxes), swapped);
+            for (b, a) in boxes.iter().zip(&before) {
+                let expected = if swapped {
+                    (a.y0, a.y1, a.x0, a.x1)
+                } else {
+                    (a.x0, a.x1, a.y0, a.y1)
+                };
+                assert_eq!((b.x0, b.x1, b.y0, b.y1), expected);
+                assert_eq!((b.from, b.to), (a.from, a.to));
+            }
+        }
+    }
+
+    #[test]
     fn every_scan_visits_every_overlapping_pair() {
         let mut random = xorshift(0x9e37_79b9_7f4a_7c15);
         let mut next = move || (random() >> 11) as f64 / (1u64 << 53) as f64;
@@ -1013,11 +1100,14 @@ mod tests {
                         v
                     }
                 };
+                // every other round mirrored across the diagonal, so that the sorted scan
+                // runs along x for some shape and along y for its mirror image
+                let mirror = |(x, y): (f64, f64)| if round % 2 == 0 { (x, y) } else { (y, x) };
                 let ring: Vec<(f64, f64)> = (0..n)
                     .map(|k| {
                         let t = k as f64 * core::f64::consts::TAU / n as f64;
                         let rho = radius * (1.0 + 0.3 * (waves * t).sin());
-                        (snap(cx + rho * t.cos()), snap(cy + rho * t.sin()))
+                        mirror((snap(cx + rho * t.cos()), snap(cy + rho * t.sin())))
                     })
                     .collect();
                 rings.push(ring);

@@ -24,7 +24,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let Some(path) = args.get(1) else {
         return Err("usage: idle_threads SHAPES.json [RUNS] [THREADS]".into());
     };
-    let runs: usize = args.get(2).map_or(Ok(100), |r| r.parse())?;
+    let runs: usize = args.get(2).map_or(Ok(100), |r| r.parse())?.max(1);
     let threads: usize = args.get(3).map_or(Ok(2), |t| t.parse())?;
     let shapes: Vec<Rings> = serde_json::from_str(&std::fs::read_to_string(path)?)?;
     let flat: Vec<(Vec<[f64; 2]>, Vec<usize>)> = shapes
@@ -52,16 +52,16 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 .with_threads(count);
             // warm: the workers' buffers are allocated on their first use
             tri.triangulate_many(&page, &options, &mut out);
-            let mut times: Vec<f64> = (0..runs)
-                .map(|_| {
-                    std::thread::sleep(Duration::from_millis(gap));
-                    let began = Instant::now();
-                    let results = tri.triangulate_many(&page, &options, &mut out);
-                    let took = began.elapsed().as_secs_f64() * 1e3;
-                    assert!(results.iter().all(Result::is_ok), "a polygon failed");
-                    took
-                })
-                .collect();
+            let mut times = Vec::with_capacity(runs);
+            for _ in 0..runs {
+                std::thread::sleep(Duration::from_millis(gap));
+                let began = Instant::now();
+                let results = tri.triangulate_many(&page, &options, &mut out);
+                times.push(began.elapsed().as_secs_f64() * 1e3);
+                if let Some(Err(e)) = results.into_iter().find(Result::is_err) {
+                    return Err(format!("a polygon failed: {e}").into());
+                }
+            }
             times.sort_by(f64::total_cmp);
             row += &format!("   {:>11.3}", times[times.len() / 2]);
         }

@@ -510,19 +510,54 @@ fn collect_shared(cx: &mut Context, s: &mut Scratch, first_split: usize) {
     cx.shared.dedup();
 }
 
+/// The pool range holding exactly ring `r`'s live nodes (with removed ones between), when
+/// there is one: nothing was inserted since loading (the pool ends where the last ring
+/// loaded ends) and no ring was cut into lobes. Pool order need not be ring order
+/// (untwisting relinks), but reading the range needs no walk along the links, whose every
+/// step waits for the last.
+fn loaded_range(cx: &Context, r: usize) -> Option<core::ops::Range<usize>> {
+    let last = cx.as_loaded.last()?;
+    if cx.split_lobes || cx.pool.len() != (last.first + last.len) as usize {
+        return None;
+    }
+    let ring = cx.as_loaded.get(r)?;
+    Some(ring.first as usize..(ring.first + ring.len) as usize)
+}
+
+/// Ring `r`'s rightmost-lowest node, and how many of its nodes lie there. Where several
+/// do, the first in the walk from the ring's start is the one.
+fn rightmost(cx: &Context, r: usize) -> (NodeId, u32) {
+    let pool = &cx.pool;
+    let start = cx.rings[r].start;
+    let pick = |nodes: &mut dyn Iterator<Item = NodeId>| {
+        let (mut best, mut b) = (start, pool.p(start));
+        let mut visits = 0;
+        for n in nodes {
+            let p = pool.p(n);
+            if p.x > b.x || (p.x == b.x && p.y < b.y) {
+                (best, b, visits) = (n, p, 1);
+            } else if p == b {
+                visits += 1;
+            }
+        }
+        (best, visits)
+    };
+    if let Some(range) = loaded_range(cx, r) {
+        let mut live = range
+            .map(|k| NodeId(k as u32))
+            .filter(|&n| !pool.get(n).removed);
+        let found = pick(&mut live);
+        if found.1 == 1 {
+            return found;
+        }
+    }
+    pick(&mut pool.ring(start))
+}
+
 /// Finds ring `r`'s rightmost vertex and makes the ring counter-clockwise.
 fn orient_ring(cx: &mut Context, s: &mut Scratch, r: usize) {
     let start = cx.rings[r].start;
-    let (mut best, mut b) = (start, cx.pool.p(start));
-    let mut visits = 0;
-    for n in cx.pool.ring(start) {
-        let p = cx.pool.p(n);
-        if p.x > b.x || (p.x == b.x && p.y < b.y) {
-            (best, b, visits) = (n, p, 1);
-        } else if p == b {
-            visits += 1;
-        }
-    }
+    let (best, visits) = rightmost(cx, r);
     cx.rings[r].rightmost = best;
     // Visited once, the rightmost-lowest vertex is usually a strict turn (no repeats, no
     // spikes, and a split node is never rightmost-lowest), and that turn gives the
@@ -546,7 +581,16 @@ fn orient_ring(cx: &mut Context, s: &mut Scratch, r: usize) {
     };
     let counter_clockwise = counter_clockwise.unwrap_or(turn != Orientation::Clockwise);
     if !counter_clockwise {
-        cx.pool.reverse(start);
+        match loaded_range(cx, r) {
+            Some(range) => {
+                for node in &mut cx.pool.nodes[range] {
+                    if !node.removed {
+                        core::mem::swap(&mut node.prev, &mut node.next);
+                    }
+                }
+            }
+            None => cx.pool.reverse(start),
+        }
     }
 }
 
@@ -577,6 +621,7 @@ fn outermost_edge_arrives(cx: &Context, at: NodeId) -> Option<bool> {
 mod tests {
     use super::*;
     use crate::testing::{cleaned, turn_at_rightmost};
+    use crate::triangulator::pipeline::Stages;
 
     /// The kept vertices of each live ring, from its least input vertex on.
     fn kept(cx: &Context) -> Vec<Vec<u32>> {
@@ -726,5 +771,83 @@ mod tests {
         let (cx, _) = cleaned(&bow_tie, &[0], true);
         assert_eq!(cx.crossings.len(), 1);
         assert!(cx.repairs.iter().any(|r| r.kind == RepairKind::EdgesCross));
+    }
+
+    /// Reading the loaded range finds the node the walk along the links finds, and
+    /// reversing a ring off the range keeps it whole: random rings on a small grid
+    /// (repeats, spikes, touching and crossing rings, edges split where a vertex touches
+    /// them, lobes, several nodes at the rightmost position), strict and lenient.
+    #[test]
+    fn the_rightmost_node_read_off_the_pool_is_the_walks() {
+        let mut random = crate::testing::random(0x5eed_0f71_7e00);
+        let (mut ranged, mut fell_back) = (0, 0);
+        for case in 0..3000 {
+            let rings: Vec<Vec<[f64; 2]>> = (0..1 + random(3))
+                .map(|_| {
+                    let len = 3 + random(7);
+                    (0..len)
+                        .map(|_| [random(5) as f64, random(5) as f64])
+                        .collect()
+                })
+                .collect();
+            let refs: Vec<&[[f64; 2]]> = rings.iter().map(Vec::as_slice).collect();
+            let (vertices, starts) = crate::testing::flatten(&refs);
+            for lenient in [false, true] {
+                // the pipeline up to `orient_rings` (see `pipeline::load_and_clean`)
+                let mut cx = Context::default();
+                cx.reset(lenient);
+                let mut st = Stages::default();
+                if crate::stages::load::load(&mut cx, &vertices, &starts).is_err()
+                    || !matches!(clean(&mut cx, &mut st.clean, false), Ok(true))
+                {
+                    continue;
+                }
+                if lenient && cx.crossings.is_empty() {
+                    crate::stages::lobes::split(&mut cx, &mut st.lobes);
+                }
+                let alive: Vec<usize> =
+                    (0..cx.rings.len()).filter(|&r| cx.rings[r].alive).collect();
+                let mut members: Vec<Vec<NodeId>> = Vec::new();
+                for &r in &alive {
+                    let start = cx.rings[r].start;
+                    let (mut best, mut b, mut visits) = (start, cx.pool.p(start), 0);
+                    for n in cx.pool.ring(start) {
+                        let p = cx.pool.p(n);
+                        if p.x > b.x || (p.x == b.x && p.y < b.y) {
+                            (best, b, visits) = (n, p, 1);
+                        } else if p == b {
+                            visits += 1;
+                        }
+                    }
+                    assert_eq!(rightmost(&cx, r), (best, visits), "case {case}: {rings:?}");
+                    match loaded_range(&cx, r) {
+                        Some(_) if visits == 1 => ranged += 1,
+                        _ => fell_back += 1,
+                    }
+                    let mut nodes: Vec<NodeId> = cx.pool.ring(start).collect();
+                    nodes.sort_unstable();
+                    members.push(nodes);
+                }
+                // orienting (reversing some rings off the pool) keeps every ring's nodes,
+                // linked both ways
+                orient_rings(&mut cx, &mut st.clean);
+                for (&r, before) in alive.iter().zip(&members) {
+                    let start = cx.rings[r].start;
+                    // (bounded: a ring broken by a wrong reversal may never come back)
+                    let bound = cx.pool.len() + 1;
+                    let mut nodes: Vec<NodeId> = cx.pool.ring(start).take(bound).collect();
+                    assert!(nodes.len() < bound, "case {case}: a ring lost its way");
+                    for &n in &nodes {
+                        assert_eq!(cx.pool.prev(cx.pool.next(n)), n, "case {case}: {rings:?}");
+                    }
+                    nodes.sort_unstable();
+                    assert_eq!(&nodes, before, "case {case}: {rings:?}");
+                }
+            }
+        }
+        assert!(
+            ranged > 1000 && fell_back > 100,
+            "{ranged} read off, {fell_back} walked"
+        );
     }
 }

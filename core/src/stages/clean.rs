@@ -582,13 +582,7 @@ fn orient_ring(cx: &mut Context, s: &mut Scratch, r: usize) {
     let counter_clockwise = counter_clockwise.unwrap_or(turn != Orientation::Clockwise);
     if !counter_clockwise {
         match loaded_range(cx, r) {
-            Some(range) => {
-                for node in &mut cx.pool.nodes[range] {
-                    if !node.removed {
-                        core::mem::swap(&mut node.prev, &mut node.next);
-                    }
-                }
-            }
+            Some(range) => cx.pool.reverse_live_in(range),
             None => cx.pool.reverse(start),
         }
     }

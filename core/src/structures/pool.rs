@@ -273,6 +273,16 @@ impl Pool {
         }
     }
 
+    /// [`Pool::reverse`] for a ring whose nodes are exactly the live ones of `range`: the
+    /// same relinking, in pool order rather than along the links.
+    pub fn reverse_live_in(&mut self, range: core::ops::Range<usize>) {
+        for node in &mut self.nodes[range] {
+            if !node.removed {
+                core::mem::swap(&mut node.prev, &mut node.next);
+            }
+        }
+    }
+
     /// Iterates the ring through `start`, beginning there.
     pub fn ring(&self, start: NodeId) -> RingIter<'_> {
         RingIter {

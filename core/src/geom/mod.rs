@@ -4,12 +4,14 @@
 
 mod coord;
 mod corners;
+mod ears;
 mod exact;
 mod predicates;
 mod segments;
 
 pub use coord::Coord;
 pub(crate) use corners::{corner_contains, on_ray, same_ray};
+pub(crate) use ears::{bounds, interferes, near};
 pub(crate) use exact::{in_range, SnapGrid};
 pub(crate) use predicates::*;
 pub(crate) use segments::{boxed_segments_meet, compare_hits, crosses, overlaps, segments_meet};

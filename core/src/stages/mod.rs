@@ -1,6 +1,6 @@
 //! Layer 5, the stages of the pipeline, in the order the triangulator runs them:
 //! [`load`] → [`clean`] (→ [`lobes`], lenient) → [`nest`] → [`touch`] → [`bridge`] →
-//! [`clip`]. Each is a function over the [`Context`](crate::context::Context) and its own
+//! [`clip`]; [`small`] stands in for all of them on one small ring. Each is a function over the [`Context`](crate::context::Context) and its own
 //! scratch; no stage imports another — what one stage leaves for the next is in the
 //! context, and `ARCHITECTURE.md` states it as each stage's guarantee.
 
@@ -12,4 +12,5 @@ pub(crate) mod lobes;
 pub(crate) mod nest;
 pub(crate) mod resolve;
 pub(crate) mod seidel;
+pub(crate) mod small;
 pub(crate) mod touch;

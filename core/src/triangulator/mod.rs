@@ -35,6 +35,7 @@ impl Worker {
         out: &mut Vec<[u32; 3]>,
     ) -> Result<lenient::Outcome, Error> {
         let (cx, stages, reruns) = (&mut self.cx, &mut self.stages, &mut self.reruns);
+        stages.small.took = false;
         // (a refused call leaves no triangles of an earlier one behind)
         out.clear();
         cx.added.clear();
@@ -153,6 +154,9 @@ impl<T: Coord> Triangulator<T> {
         nesting: crate::Nesting,
     ) -> Result<(), Error> {
         let w = &mut self.worker;
+        if pipeline::small_ring_valid(&mut w.cx, &mut w.stages, vertices, ring_starts) {
+            return Ok(());
+        }
         w.cx.keep_collinear = false;
         w.cx.reset(false);
         pipeline::check_input(
@@ -228,6 +232,21 @@ impl<T: Coord> Triangulator<T> {
         (self.many).lend_threads(&mut self.worker, options, vertices.len());
         let made = self.worker.run(vertices, ring_starts, options, out)?;
         Ok(self.report(made, out.len()))
+    }
+
+    /// Lets `triangulate` and `check` take one ring of a few dozen vertices through the
+    /// small-ring stage (the default), or always through the whole pipeline, which gives
+    /// the same result: for tests that hold the two to it. Not part of the stable API.
+    #[doc(hidden)]
+    pub fn set_small_rings(&mut self, on: bool) {
+        self.worker.stages.small.off = !on;
+    }
+
+    /// Whether the last `triangulate` or `check` call was the small-ring stage's alone
+    /// (see [`Triangulator::set_small_rings`]). Not part of the stable API.
+    #[doc(hidden)]
+    pub fn small_ring_took_last(&self) -> bool {
+        self.worker.stages.small.took
     }
 
     /// The report of the call that made `made` and `triangles` triangles; keeps its added

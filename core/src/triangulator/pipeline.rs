@@ -4,12 +4,15 @@
 //! load ─► clean ─► [lobes] ─► clean::orient_rings ─► nest ─► touch ─► bridge ─► clip
 //! ```
 //!
+//! One ring of a few dozen vertices takes the `small` stage instead, which does all of
+//! that in one pass and hands back to the pipeline whatever it does not handle.
+//!
 //! Only this module and [`super::lenient`] call stages. Each stage leaves its guarantee
 //! in the shared [`Context`] for the next (see `ARCHITECTURE.md`).
 
 use crate::context::Context;
 use crate::geom::Coord;
-use crate::stages::{bridge, clean, clip, load, lobes, nest, touch};
+use crate::stages::{bridge, clean, clip, load, lobes, nest, small, touch};
 use crate::{Error, Nesting};
 
 /// Every stage's scratch buffers, kept between calls so that a warm triangulator
@@ -22,6 +25,44 @@ pub(crate) struct Stages {
     pub touch: touch::Scratch,
     pub bridge: bridge::Scratch,
     pub clip: clip::Scratch,
+    pub small: small::Scratch,
+}
+
+/// The small-ring stage in place of the pipeline, for one ring of at most `small::MAX`
+/// vertices: whether it proved the input valid and triangulated it into `out` (with the
+/// fast strategy's triangles). When not, the pipeline must run from the start.
+pub(crate) fn small_ring<T: Coord>(
+    cx: &mut Context,
+    st: &mut Stages,
+    vertices: &[[T; 2]],
+    ring_starts: &[usize],
+    lenient: bool,
+    out: &mut Vec<[u32; 3]>,
+) -> bool {
+    // (a ring that mark-and-cut would take keeps the pipeline: the harness lowers its
+    // size so that small inputs take its rounds)
+    #[cfg(feature = "threads")]
+    let rounds = (st.clip.threads.as_ref()).is_some_and(|t| vertices.len() >= t.min);
+    #[cfg(not(feature = "threads"))]
+    let rounds = false;
+    st.small.took = !rounds
+        && small::fits(&st.small, vertices.len(), ring_starts)
+        && small::check(cx, &mut st.small, vertices)
+        && small::clip(&st.small, lenient, out);
+    st.small.took
+}
+
+/// Strict mode's input check by the small-ring stage: `true` when it proved the input
+/// valid; when not, [`check_input`] must decide.
+pub(crate) fn small_ring_valid<T: Coord>(
+    cx: &mut Context,
+    st: &mut Stages,
+    vertices: &[[T; 2]],
+    ring_starts: &[usize],
+) -> bool {
+    st.small.took = small::fits(&st.small, vertices.len(), ring_starts)
+        && small::check(cx, &mut st.small, vertices);
+    st.small.took
 }
 
 /// Loads and checks the input: `load`, `clean` (and in lenient mode on input without

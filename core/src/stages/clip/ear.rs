@@ -1,33 +1,15 @@
-//! The exact geometry of the ear test: which reflex vertex spoils an ear, whether a
-//! direction leaves a node into the polygon, and the winding number next to a vertex.
+//! The exact geometry of the clipper's repairs: whether a direction leaves a node into the
+//! polygon, and the winding number next to a vertex. (Which vertex spoils an ear is
+//! `geom::interferes`, shared with the small-ring stage.)
 
-use crate::geom::{corner_contains, left_of, orient2d, Orientation, Point};
+use crate::geom::{corner_contains, orient2d, Orientation, Point};
 use crate::structures::{NodeId, Pool};
-
-use super::PLANTED_BUG;
 
 /// Whether the direction from node `n` towards `q` leaves `n` into the polygon (strictly
 /// inside its corner, or along one of its sides).
 pub(super) fn sees(pool: &Pool, n: NodeId, q: Point) -> bool {
     let o = pool.p(n);
     corner_contains(o, pool.p(pool.next(n)), pool.p(pool.prev(n)), q) != Some(false)
-}
-
-/// The bounding box of a, b, c (finite: plain comparisons, without `f64::min`'s NaN
-/// handling).
-#[inline(always)]
-pub(super) fn bounds(a: Point, b: Point, c: Point) -> (Point, Point) {
-    let min = |s: f64, t: f64| if t < s { t } else { s };
-    let max = |s: f64, t: f64| if t > s { t } else { s };
-    let lo = Point::new(min(min(a.x, b.x), c.x), min(min(a.y, b.y), c.y));
-    let hi = Point::new(max(max(a.x, b.x), c.x), max(max(a.y, b.y), c.y));
-    (lo, hi)
-}
-
-/// Whether `q` lies in the box `lo..=hi`, as the ear test's candidates must.
-#[inline(always)]
-pub(super) fn near(lo: Point, hi: Point, q: Point) -> bool {
-    q.x >= lo.x && q.x <= hi.x && !(PLANTED_BUG && q.x == hi.x) && q.y >= lo.y && q.y <= hi.y
 }
 
 /// Signed crossing of edge e → f with the ray towards +x from the point just past `o` on
@@ -51,48 +33,6 @@ pub(super) fn crossing_past(e: Point, f: Point, o: Point, q: Point) -> i32 {
         (false, true, Orientation::CounterClockwise) => 1,
         (true, false, Orientation::Clockwise) => -1,
         _ => 0,
-    }
-}
-
-/// Whether node `r` spoils the ear triangle a, b, c (counter-clockwise): it lies strictly
-/// inside, inside the diagonal a–c, or on the boundary with an edge running inside.
-/// `q` is the position of `r`.
-#[inline]
-pub(super) fn interferes(pool: &Pool, r: NodeId, q: Point, a: Point, b: Point, c: Point) -> bool {
-    use Orientation::*;
-    // most candidates lie outside: stop at the first side that says so
-    let oab = orient2d(a, b, q);
-    if oab == Clockwise {
-        return false;
-    }
-    let obc = orient2d(b, c, q);
-    if obc == Clockwise {
-        return false;
-    }
-    let oca = orient2d(c, a, q);
-    if oca == Clockwise {
-        return false;
-    }
-    if oab == CounterClockwise && obc == CounterClockwise && oca == CounterClockwise {
-        return true;
-    }
-    // on the boundary: which part of it?
-    let enters = |inside: &dyn Fn(Point) -> bool| {
-        inside(pool.p(pool.prev(r))) || inside(pool.p(pool.next(r)))
-    };
-    if q == a {
-        enters(&|p| left_of(a, b, p) && left_of(c, a, p))
-    } else if q == b {
-        enters(&|p| left_of(a, b, p) && left_of(b, c, p))
-    } else if q == c {
-        enters(&|p| left_of(b, c, p) && left_of(c, a, p))
-    } else if oca == Collinear {
-        // inside the diagonal: cutting would leave a vertex inside an edge
-        true
-    } else if oab == Collinear {
-        enters(&|p| left_of(a, b, p))
-    } else {
-        enters(&|p| left_of(b, c, p))
     }
 }
 

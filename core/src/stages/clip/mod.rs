@@ -26,7 +26,7 @@
 //! internal error, lenient mode cuts a best-effort triangle and says so.
 
 use crate::context::Context;
-use crate::geom::{approx_angle_rank, orient2d, Orientation, Point};
+use crate::geom::{approx_angle_rank, bounds, interferes, near, orient2d, Orientation, Point};
 use crate::structures::Cells;
 use crate::structures::NodeId;
 use crate::structures::Tips;
@@ -40,15 +40,7 @@ pub(crate) use marks::{Lent, MARK_AND_CUT_CHUNK, MARK_AND_CUT_MIN};
 mod queue;
 mod repair;
 
-use ear::{bounds, interferes, near};
 use queue::{ear, ear_node, EarQueue};
-
-/// The fuzzing experiment, never enabled otherwise: built with
-/// `RUSTFLAGS="--cfg polytri_planted_bug"`, the ear test (unindexed, as for small rings)
-/// misses reflex vertices on the right edge of the ear's bounding box (an off-by-one, `<`
-/// for `<=`), and the fuzz targets must find it (see `docs/harness.md`). A cfg rather than
-/// a feature, so that `--all-features` never plants it.
-const PLANTED_BUG: bool = cfg!(polytri_planted_bug);
 
 /// Polygons with fewer reflex vertices than this scan them all in an ear test; more, and
 /// building the grid pays (earcut's threshold is 80 vertices in all).
@@ -543,7 +535,7 @@ impl<'a> Clipper<'a> {
         let (a, b, c) = (pool.p(an), pool.p(ear), pool.p(cn));
         !self.any_reflex_near(a, b, c, |r, q| {
             looked();
-            r != an && r != ear && r != cn && interferes(pool, r, q, a, b, c)
+            r != an && r != ear && r != cn && interferes(q, around(pool, r), a, b, c)
         })
     }
 
@@ -564,8 +556,9 @@ impl<'a> Clipper<'a> {
         };
         let pool = &self.cx.pool;
         let (a, b, c) = (pool.p(an), pool.p(ear), pool.p(cn));
-        let spoils =
-            |r: NodeId, q: Point| r != an && r != ear && r != cn && interferes(pool, r, q, a, b, c);
+        let spoils = |r: NodeId, q: Point| {
+            r != an && r != ear && r != cn && interferes(q, around(pool, r), a, b, c)
+        };
         let last = self.s.spoiler.get(ear.idx()).copied();
         if let Some(r) = last.filter(|r| r.idx() < pool.len()) {
             let (node, (lo, hi)) = (pool.get(r), bounds(a, b, c));
@@ -902,6 +895,11 @@ fn remove_walls(cx: &mut Context, start: NodeId) -> NodeId {
             n = next;
         }
     }
+}
+
+/// The positions of node `r`'s neighbours, as [`interferes`] asks for them.
+fn around(pool: &crate::structures::Pool, r: NodeId) -> impl Fn() -> [Point; 2] + '_ {
+    move || [pool.p(pool.prev(r)), pool.p(pool.next(r))]
 }
 
 /// The turn prev(n) → n → next(n).

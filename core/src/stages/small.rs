@@ -12,9 +12,10 @@
 //! 3. **Prove** that no two edges meet, other than neighbours at their shared vertex:
 //!    every pair whose boxes overlap is decided by exact signs.
 //! 4. **Orient** the ring counter-clockwise by the turn at its rightmost-lowest vertex.
-//! 5. **Clip** with the fast strategy's walk (`clip`): the same start, the same "not an
-//!    ear" marks, the same order of ears, the same fan at the end. The reflex vertices
-//!    are a 64-bit mask.
+//! 5. **Clip** with the strategy's walk (`clip`): the fast one with the same start, the
+//!    same "not an ear" marks, the same order of ears and the same fan at the end; the
+//!    quality one with the same queue order (smallest angle rank, then vertex). The
+//!    reflex vertices are a 64-bit mask.
 //!
 //! Whatever the pipeline would treat specially makes the stage give up (`false`) before
 //! writing anything the pipeline would not: non-finite coordinates, a spike or a ring
@@ -25,8 +26,8 @@
 
 use crate::context::Context;
 use crate::geom::{
-    approx_cross, bounds, boxed_segments_meet, interferes, near, orient2d, within_box, Coord,
-    Orientation, Point,
+    approx_angle_rank, approx_cross, bounds, boxed_segments_meet, interferes, near, orient2d,
+    within_box, Coord, Orientation, Point,
 };
 use crate::report::{DropReason, Dropped};
 
@@ -296,10 +297,10 @@ pub(crate) fn double_area(s: &Scratch) -> f64 {
     sum.abs()
 }
 
-/// Step 5: clips the checked ring into `out` (cleared first) with the fast strategy's
-/// walk. `false` when the walk gets stuck or the last triangle turns clockwise (in strict
-/// mode): the pipeline's repairs or errors decide then.
-pub(crate) fn clip(s: &Scratch, lenient: bool, out: &mut Vec<[u32; 3]>) -> bool {
+/// Step 5: clips the checked ring into `out` (cleared first) with the strategy's walk,
+/// the fast one or the quality one. `false` when the walk gets stuck or the last triangle
+/// turns clockwise (in strict mode): the pipeline's repairs or errors decide then.
+pub(crate) fn clip(s: &Scratch, quality: bool, lenient: bool, out: &mut Vec<[u32; 3]>) -> bool {
     out.clear();
     let mut w = Walk {
         s,
@@ -311,7 +312,17 @@ pub(crate) fn clip(s: &Scratch, lenient: bool, out: &mut Vec<[u32; 3]>) -> bool 
         no_fan: false,
         out,
     };
-    w.run(lenient)
+    let start = w.classify();
+    let last = if quality {
+        w.quality(start)
+    } else {
+        w.fast(start)
+    };
+    match last {
+        Some(Some(last)) => w.finish(last, lenient),
+        Some(None) => true,
+        None => false,
+    }
 }
 
 /// The ring while it is clipped: its links, reflex vertices and marks.
@@ -350,12 +361,11 @@ impl Walk<'_> {
         orient2d(self.p(a), self.p(b), self.p(c)) == Orientation::CounterClockwise
     }
 
-    /// The fast walk (`Clipper::fast` on a ring with no repeated position and no crossed
-    /// edge, from where `Clipper::new` starts it).
-    fn run(&mut self, lenient: bool) -> bool {
+    /// Marks the reflex vertices, as the clipper classifies a ring (a reflex tip is marked
+    /// "not an ear" at once), from the turns the filter took: right turns, or left ones on
+    /// a reversed ring. Returns where the clipper starts.
+    fn classify(&mut self) -> usize {
         let start = self.prev(self.s.start);
-        // classify, as the clipper does (a reflex tip is marked "not an ear" at once),
-        // from the turns the filter took: right turns, or left ones on a reversed ring
         let mut v = start;
         for _ in 0..self.len {
             let left = self.s.left & bit(v) != 0;
@@ -365,10 +375,16 @@ impl Walk<'_> {
             v = self.next(v);
         }
         self.not_ear = self.reflex;
+        start
+    }
+
+    /// The fast walk (`Clipper::fast` on a ring with no repeated position and no crossed
+    /// edge): the vertex to finish at, `Some(None)` when a fan finished, `None` when stuck.
+    fn fast(&mut self, start: usize) -> Option<Option<usize>> {
         let (mut ear, mut stop, mut rescanned) = (start, start, false);
         while self.len > 3 {
             if self.reflex.count_ones() <= 1 && !self.no_fan && self.try_fan(ear) {
-                return true;
+                return Some(None);
             }
             if self.not_ear & bit(ear) == 0 {
                 if self.is_ear(ear) {
@@ -391,17 +407,72 @@ impl Walk<'_> {
             }
             if ear == stop {
                 if rescanned {
-                    return false;
+                    return None;
                 }
                 // a lap without an ear: a cut elsewhere may have freed a marked tip
                 rescanned = true;
                 self.not_ear = 0;
             }
         }
-        // the last triangle, when it has area; a clockwise one is strict mode's error
-        let (a, c) = (self.prev(ear), self.next(ear));
-        match orient2d(self.p(a), self.p(ear), self.p(c)) {
-            Orientation::CounterClockwise => self.emit(a, ear, c),
+        Some(Some(ear))
+    }
+
+    /// The quality strategy (`Clipper::quality`): always the ear with the smallest angle
+    /// at its tip, from a queue of convex tips by angle rank, then vertex (here one entry
+    /// per vertex, the smallest found by a scan). A tip is tested when it comes up. (The
+    /// clipper also skips tips whose neighbour was cut since they were queued; here both
+    /// neighbours of every cut are queued again, or turn reflex and fail the test, so
+    /// every entry is current.)
+    fn quality(&mut self, start: usize) -> Option<Option<usize>> {
+        // by vertex: its entry, `u64::MAX` for none
+        let mut queue = [u64::MAX; MAX];
+        let push = |w: &Self, v: usize, queue: &mut [u64; MAX]| {
+            if w.reflex & bit(v) == 0 {
+                let rank = approx_angle_rank(w.p(w.prev(v)), w.p(v), w.p(w.next(v)));
+                // as the clipper packs it: the rank's top bits above the vertex
+                queue[v] = (rank.to_bits() << 1) >> 32 << 32 | v as u64;
+            }
+        };
+        let seed = |w: &Self, from: usize, queue: &mut [u64; MAX]| {
+            let mut v = from;
+            for _ in 0..w.len {
+                push(w, v, queue);
+                v = w.next(v);
+            }
+        };
+        seed(self, start, &mut queue);
+        let (mut last, mut rescanned) = (start, false);
+        while self.len > 3 {
+            let (item, v) = (queue.iter().zip(0..).min()).map_or((u64::MAX, 0), |(&k, v)| (k, v));
+            if item == u64::MAX {
+                // none queued: once more over the whole ring, then the pipeline decides
+                if rescanned {
+                    return None;
+                }
+                rescanned = true;
+                seed(self, last, &mut queue);
+                continue;
+            }
+            queue[v] = u64::MAX;
+            if !self.is_ear(v) {
+                continue;
+            }
+            let a = self.prev(v);
+            let c = self.cut(v);
+            rescanned = false;
+            for m in [a, c] {
+                push(self, m, &mut queue);
+            }
+            last = c;
+        }
+        Some(Some(last))
+    }
+
+    /// The last triangle, when it has area; a clockwise one is strict mode's error.
+    fn finish(&mut self, last: usize, lenient: bool) -> bool {
+        let (a, c) = (self.prev(last), self.next(last));
+        match orient2d(self.p(a), self.p(last), self.p(c)) {
+            Orientation::CounterClockwise => self.emit(a, last, c),
             Orientation::Clockwise if !lenient => return false,
             _ => {}
         }

@@ -105,8 +105,9 @@ pub(crate) fn triangulate<T: Coord>(
     options: &Options,
     out: &mut Vec<[u32; 3]>,
 ) -> Result<Outcome, Error> {
-    if options.strategy == Strategy::Fast
-        && pipeline::small_ring(cx, st, vertices, ring_starts, options.lenient, out)
+    let quality = options.strategy == Strategy::Quality;
+    if (quality || options.strategy == Strategy::Fast)
+        && pipeline::small_ring(cx, st, vertices, ring_starts, quality, options.lenient, out)
     {
         // valid input: a lenient run is measured all the same, as the pipeline's is
         let deviation = if options.lenient {

@@ -30,12 +30,14 @@ pub(crate) struct Stages {
 
 /// The small-ring stage in place of the pipeline, for one ring of at most `small::MAX`
 /// vertices: whether it proved the input valid and triangulated it into `out` (with the
-/// fast strategy's triangles). When not, the pipeline must run from the start.
+/// triangles of the fast strategy, or with `quality` the quality one's). When not, the
+/// pipeline must run from the start.
 pub(crate) fn small_ring<T: Coord>(
     cx: &mut Context,
     st: &mut Stages,
     vertices: &[[T; 2]],
     ring_starts: &[usize],
+    quality: bool,
     lenient: bool,
     out: &mut Vec<[u32; 3]>,
 ) -> bool {
@@ -48,7 +50,7 @@ pub(crate) fn small_ring<T: Coord>(
     st.small.took = !rounds
         && small::fits(&st.small, vertices.len(), ring_starts)
         && small::check(cx, &mut st.small, vertices)
-        && small::clip(&st.small, lenient, out);
+        && small::clip(&st.small, quality, lenient, out);
     st.small.took
 }
 

@@ -70,6 +70,12 @@ pub(crate) struct Context {
     pub shared: Vec<NodeId>,
     /// Lenient mode: some ring touching itself was split into its lobes (by `lobes`).
     pub split_lobes: bool,
+    /// Lenient mode: `lobes` leaves every ring whole, for the rest of the call (splitting
+    /// them made rings lie on each other without cancelling).
+    pub keep_lobes: bool,
+    /// Lenient mode: two rings lie on each other without cancelling (their depths are
+    /// not one apart; strict mode refuses them as `Error::RingsOverlap`; set by `nest`).
+    pub rings_overlap: bool,
     /// The input rings `lobes` split (their lobes are the rings after `as_loaded`'s).
     pub lobe_rings: Vec<u32>,
     /// The live edges in a grid, built by `nest` and reused by `bridge`.
@@ -87,6 +93,7 @@ impl Context {
         self.repairs.clear();
         self.lenient = lenient;
         self.split_lobes = false;
+        self.rings_overlap = false;
         self.edge_index.invalidate();
     }
 

@@ -33,7 +33,11 @@
 //! than [`MOST_VISITS_CUT`] times by one ring is not cut. Every cycle becomes a ring entry
 //! with the same input ring number, and `touch` joins them again properly once nesting has
 //! turned them. Input with crossing edges is left whole: it has no region to keep, and its
-//! repairs were tuned on whole rings.
+//! repairs were tuned on whole rings. So is input whose lobes, once cut, lie on another
+//! ring without cancelling it (`nest` finds their depths not one apart: a lobe and a ring
+//! lying on it the same way round, each inside the other): the triangulator then runs
+//! again with every ring whole (`Context::keep_lobes`), as strict mode reads them, where
+//! the other ring is the lobe's hole.
 //!
 //! Strict mode keeps rings whole: a ring whose lobes turn opposite ways is refused there
 //! (as `Error::LobesWindOpposite`, or as rings crossing at a vertex), cancelled lobe or

@@ -242,7 +242,12 @@ fn compute_depths(cx: &mut Context, s: &mut Scratch) -> Result<(), Error> {
                 vertex: cx.pool.get(ring.rightmost).vertex as usize,
             })
         }
-        _ => Ok(()),
+        // lenient mode goes on, and says so: the triangulator may try again another way
+        Some(_) => {
+            cx.rings_overlap = true;
+            Ok(())
+        }
+        None => Ok(()),
     }
 }
 

@@ -123,6 +123,7 @@ pub(crate) fn triangulate<T: Coord>(
     }
     re.careful.bridges = false;
     cx.keep_collinear = false;
+    cx.keep_lobes = false;
     // without `untwist` the pipeline always runs to the end
     let (mut polygons, mut holes) = run(cx, st, re, vertices, ring_starts, options, false, out)?
         .ok_or(Error::Internal { stage: "clean" })?;
@@ -247,6 +248,14 @@ fn prepare<T: Coord>(
 ) -> Result<Option<usize>, Error> {
     if !pipeline::check_input(cx, st, vertices, ring_starts, nesting, untwist)? {
         return Ok(None);
+    }
+    if cx.split_lobes && cx.rings_overlap {
+        // Cut into lobes, a ring's lobe lies on another ring without cancelling it (both
+        // holes, each inside the other, say), which whole it may well have cancelled: the
+        // rings whole, as strict mode reads them, for the rest of the call.
+        cx.keep_lobes = true;
+        cx.reset(true);
+        pipeline::check_input(cx, st, vertices, ring_starts, nesting, untwist)?;
     }
     let crossing = cx.lenient && !cx.crossings.is_empty();
     // Every lenient run is measured against the input's area, as earcut measures (the

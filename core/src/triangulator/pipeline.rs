@@ -100,7 +100,7 @@ pub(crate) fn load_and_clean<T: Coord>(
     }
     // (crossing input has no region to keep, and its repairs, untwisting included, were
     // tuned on whole rings)
-    if cx.lenient && !untwist && cx.crossings.is_empty() {
+    if cx.lenient && !untwist && cx.crossings.is_empty() && !cx.keep_lobes {
         lobes::split(cx, &mut st.lobes);
     }
     clean::orient_rings(cx, &mut st.clean);

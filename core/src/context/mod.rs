@@ -71,11 +71,12 @@ pub(crate) struct Context {
     /// Lenient mode: some ring touching itself was split into its lobes (by `lobes`).
     pub split_lobes: bool,
     /// Lenient mode: `lobes` leaves every ring whole, for the rest of the call (splitting
-    /// them made rings lie on each other without cancelling).
+    /// them made two rings double each other, see `rings_doubled`).
     pub keep_lobes: bool,
-    /// Lenient mode: two rings lie on each other without cancelling (their depths are
-    /// not one apart; strict mode refuses them as `Error::RingsOverlap`; set by `nest`).
-    pub rings_overlap: bool,
+    /// Lenient mode: two rings lie on each other with equal depths, each inside the
+    /// other, so that the region there counts twice (strict mode refuses them as
+    /// `Error::RingsOverlap`; set by `nest`).
+    pub rings_doubled: bool,
     /// The input rings `lobes` split (their lobes are the rings after `as_loaded`'s).
     pub lobe_rings: Vec<u32>,
     /// The live edges in a grid, built by `nest` and reused by `bridge`.
@@ -93,7 +94,7 @@ impl Context {
         self.repairs.clear();
         self.lenient = lenient;
         self.split_lobes = false;
-        self.rings_overlap = false;
+        self.rings_doubled = false;
         self.edge_index.invalidate();
     }
 

@@ -34,8 +34,8 @@
 //! with the same input ring number, and `touch` joins them again properly once nesting has
 //! turned them. Input with crossing edges is left whole: it has no region to keep, and its
 //! repairs were tuned on whole rings. So is input whose lobes, once cut, lie on another
-//! ring without cancelling it (`nest` finds their depths not one apart: a lobe and a ring
-//! lying on it the same way round, each inside the other): the triangulator then runs
+//! ring, doubling it (`nest` finds them at equal depths, each inside the other: a lobe
+//! and a ring lying on it the same way round): the triangulator then runs
 //! again with every ring whole (`Context::keep_lobes`), as strict mode reads them, where
 //! the other ring is the lobe's hole.
 //!

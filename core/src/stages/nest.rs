@@ -242,9 +242,11 @@ fn compute_depths(cx: &mut Context, s: &mut Scratch) -> Result<(), Error> {
                 vertex: cx.pool.get(ring.rightmost).vertex as usize,
             })
         }
-        // lenient mode goes on, and says so: the triangulator may try again another way
+        // lenient mode goes on, and says where two rings double each other (equal depths,
+        // each inside the other): the triangulator may try again another way
         Some(_) => {
-            cx.rings_overlap = true;
+            let doubled = |&(b, q): &(u32, u32)| rings[b as usize].depth == rings[q as usize].depth;
+            cx.rings_doubled = s.overlaps.iter().any(doubled);
             Ok(())
         }
         None => Ok(()),

@@ -249,13 +249,19 @@ fn prepare<T: Coord>(
     if !pipeline::check_input(cx, st, vertices, ring_starts, nesting, untwist)? {
         return Ok(None);
     }
-    if cx.split_lobes && cx.rings_overlap {
-        // Cut into lobes, a ring's lobe lies on another ring without cancelling it (both
-        // holes, each inside the other, say), which whole it may well have cancelled: the
-        // rings whole, as strict mode reads them, for the rest of the call.
+    if cx.split_lobes && cx.rings_doubled {
+        // Cut into lobes, a ring's lobe lies on another ring, both holes (or both outer),
+        // each inside the other, where whole the ring may well have been cancelled by it:
+        // the rings whole, as strict mode reads them, for the rest of the call — unless
+        // whole they double each other too; then the lobes stay cut.
         cx.keep_lobes = true;
         cx.reset(true);
         pipeline::check_input(cx, st, vertices, ring_starts, nesting, untwist)?;
+        if cx.rings_doubled {
+            cx.keep_lobes = false;
+            cx.reset(true);
+            pipeline::check_input(cx, st, vertices, ring_starts, nesting, untwist)?;
+        }
     }
     let crossing = cx.lenient && !cx.crossings.is_empty();
     // Every lenient run is measured against the input's area, as earcut measures (the

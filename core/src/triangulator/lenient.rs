@@ -1,7 +1,10 @@
 //! How a call runs the pipeline — and lenient mode's reruns on crossing input.
 //!
-//! Strict mode, and lenient mode on input whose edges do not cross, run the pipeline once
-//! ([`run`]). Crossing edges have no exact triangulation; lenient mode then looks for the
+//! One small ring (up to 64 vertices, no holes) goes to the `small` stage alone, which
+//! gives the pipeline's result or hands the input back. Otherwise strict mode, and
+//! lenient mode on input whose edges do not cross, run the pipeline once ([`run`]); in
+//! lenient mode, a second time with every ring whole when cutting rings into their lobes
+//! made two rings double each other (see [`prepare`]). Crossing edges have no exact triangulation; lenient mode then looks for the
 //! best effort, judged by earcut's deviation (how far the triangles' area is from the
 //! input's, [`crate::deviation`]). The policy:
 //!
@@ -94,8 +97,8 @@ pub(crate) struct Outcome {
     pub deviation: f64,
 }
 
-/// Runs the pipeline for one call: once, and on crossing lenient input the reruns the
-/// policy above allows.
+/// Runs one call: the small-ring stage, or the pipeline once, and on crossing lenient
+/// input the reruns the policy above allows.
 pub(crate) fn triangulate<T: Coord>(
     cx: &mut Context,
     st: &mut Stages,

@@ -122,6 +122,13 @@ fn ring(rng: &mut Rng, n: usize, grid: f64) -> (Vec<[f64; 2]>, bool) {
     (v, (3..=6).contains(&defect))
 }
 
+/// Two triangulators: one that may take the small-ring stage, one that never does.
+fn pair<T: Coord>() -> (Triangulator<T>, Triangulator<T>) {
+    let mut without = Triangulator::new();
+    without.set_small_rings(false);
+    (Triangulator::new(), without)
+}
+
 /// Runs `vertices` both ways, with both strategies, strict and lenient, and checks both
 /// ways agree; returns how many of the four runs gave triangles, and how many of those
 /// the stage made alone.
@@ -158,10 +165,8 @@ fn compare<T: Coord + core::fmt::Debug>(
 #[test]
 fn the_small_ring_stage_gives_what_the_pipeline_gives() {
     let mut rng = Rng(0x5eed_5a11);
-    let (mut with64, mut without64) = (Triangulator::<f64>::new(), Triangulator::<f64>::new());
-    let (mut with32, mut without32) = (Triangulator::<f32>::new(), Triangulator::<f32>::new());
-    without64.set_small_rings(false);
-    without32.set_small_rings(false);
+    let (mut with64, mut without64) = pair::<f64>();
+    let (mut with32, mut without32) = pair::<f32>();
     let (mut triangulated, mut taken, mut clean) = (0, 0, 0);
     for case in 0..4000 {
         // up to 66 vertices with defects: past the stage's limit too
@@ -196,8 +201,7 @@ fn the_small_ring_stage_gives_what_the_pipeline_gives() {
 #[test]
 fn histograms_agree_and_take_the_stage() {
     let mut rng = Rng(0x0415_7e57);
-    let (mut with, mut without) = (Triangulator::<f64>::new(), Triangulator::<f64>::new());
-    without.set_small_rings(false);
+    let (mut with, mut without) = pair::<f64>();
     for case in 0..3000 {
         let columns = 1 + rng.below(20);
         let stepped = rng.below(2) == 0;
@@ -227,8 +231,7 @@ fn histograms_agree_and_take_the_stage() {
 #[test]
 fn tiny_rings_on_a_tiny_grid_agree() {
     let mut rng = Rng(0x0007_1e57);
-    let (mut with, mut without) = (Triangulator::<f64>::new(), Triangulator::<f64>::new());
-    without.set_small_rings(false);
+    let (mut with, mut without) = pair::<f64>();
     for case in 0..20000 {
         let n = 3 + rng.below(6);
         let v: Vec<[f64; 2]> = (0..n)

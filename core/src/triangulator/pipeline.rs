@@ -48,8 +48,7 @@ pub(crate) fn small_ring<T: Coord>(
     #[cfg(not(feature = "threads"))]
     let rounds = false;
     st.small.took = !rounds
-        && small::fits(&st.small, vertices.len(), ring_starts)
-        && small::check(cx, &mut st.small, vertices)
+        && small_ring_valid(cx, st, vertices, ring_starts)
         && small::clip(&st.small, quality, lenient, out);
     st.small.took
 }

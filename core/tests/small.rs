@@ -23,10 +23,11 @@ struct Outcome {
 fn run<T: Coord>(
     tri: &mut Triangulator<T>,
     vertices: &[[T; 2]],
+    starts: &[usize],
     opts: &Options,
 ) -> Result<Outcome, Error> {
     let mut out = Vec::new();
-    let report = tri.triangulate(vertices, &[0], opts, &mut out)?;
+    let report = tri.triangulate(vertices, starts, opts, &mut out)?;
     Ok(Outcome {
         polygons: report.polygons,
         holes: report.holes,
@@ -138,26 +139,44 @@ fn compare<T: Coord + core::fmt::Debug>(
     vertices: &[[T; 2]],
     tag: &str,
 ) -> (usize, usize) {
-    let (mut ok, mut took) = (0, 0);
     // (one ring: both conventions make it the outer boundary; each call flips which)
     let nesting = [Nesting::Auto, Nesting::FirstIsOuter][vertices.len() % 2];
+    compare_rings(with, without, vertices, &[0], nesting, tag)
+}
+
+/// [`compare`] for rings starting at `starts`, nested by `nesting`.
+fn compare_rings<T: Coord + core::fmt::Debug>(
+    with: &mut Triangulator<T>,
+    without: &mut Triangulator<T>,
+    vertices: &[[T; 2]],
+    starts: &[usize],
+    nesting: Nesting,
+    tag: &str,
+) -> (usize, usize) {
+    let (mut ok, mut took) = (0, 0);
     for strategy in [Strategy::Fast, Strategy::Quality] {
         for lenient in [false, true] {
             let opts = Options::default()
                 .with_strategy(strategy)
                 .with_nesting(nesting)
                 .with_lenient(lenient);
-            let (a, b) = (run(with, vertices, &opts), run(without, vertices, &opts));
+            let (a, b) = (
+                run(with, vertices, starts, &opts),
+                run(without, vertices, starts, &opts),
+            );
             assert!(!without.small_ring_took_last());
             took += usize::from(with.small_ring_took_last());
-            assert_eq!(a, b, "{tag}, {strategy:?}, lenient {lenient}: {vertices:?}");
+            assert_eq!(
+                a, b,
+                "{tag}, {strategy:?}, lenient {lenient}, {nesting:?}: {vertices:?} {starts:?}"
+            );
             ok += usize::from(a.is_ok());
         }
     }
     assert_eq!(
-        with.check(vertices, &[0], nesting),
-        without.check(vertices, &[0], nesting),
-        "{tag}, check: {vertices:?}"
+        with.check(vertices, starts, nesting),
+        without.check(vertices, starts, nesting),
+        "{tag}, check, {nesting:?}: {vertices:?} {starts:?}"
     );
     (ok, took)
 }
@@ -239,4 +258,211 @@ fn tiny_rings_on_a_tiny_grid_agree() {
             .collect();
         compare(&mut with, &mut without, &v, &format!("tiny {case}"));
     }
+}
+
+/// A polygon with holes: an outer star ring of radius about `grid` round the origin and
+/// up to `holes` small star rings in the cells of a 3 × 3 block inside it, snapped to the
+/// grid (which makes repeated and straight vertices, and on coarse grids touches and
+/// crossings); now and then a defect: a hole moved onto the outer ring, out of it, or
+/// inside another hole, and the rings in any order (the outer one not first). Returns the
+/// vertices, the ring starts, and whether the polygon is one the stage should take (an
+/// outer ring first, holes inside it, no defect, a fine grid).
+fn holed(rng: &mut Rng, holes: usize, grid: f64) -> (Vec<[f64; 2]>, Vec<usize>, bool) {
+    let scaled = |ring: Vec<[f64; 2]>, scale: f64, at: [f64; 2]| -> Vec<[f64; 2]> {
+        let g = grid / 1e9;
+        (ring.iter())
+            .map(|p| {
+                let q = [p[0] / 1e9 * scale + at[0], p[1] / 1e9 * scale + at[1]];
+                [(q[0] / g).round() * g, (q[1] / g).round() * g]
+            })
+            .collect()
+    };
+    // a star of radii 0.2–1 (rounded to 1e-9): the outer one, radii pushed out to 0.8–1
+    let star = |rng: &mut Rng, n: usize| loop {
+        let (v, defect) = ring(rng, n, 1e9);
+        if !defect && v.len() == n {
+            break v;
+        }
+    };
+    let n = 8 + rng.below(24);
+    let outer: Vec<[f64; 2]> = star(rng, n)
+        .iter()
+        .map(|p| {
+            let r = (p[0] * p[0] + p[1] * p[1]).sqrt();
+            let k = (0.8 + 0.2 * (r / 1e9 - 0.2) / 0.8) / (r / 1e9);
+            [p[0] * k, p[1] * k]
+        })
+        .collect();
+    let mut rings = vec![scaled(outer, grid, [0.0, 0.0])];
+    let mut cells: Vec<usize> = (0..9).collect();
+    for _ in 0..holes {
+        let cell = cells.swap_remove(rng.below(cells.len()));
+        let at = [
+            ((cell % 3) as f64 - 1.0) * 0.35 * grid,
+            ((cell / 3) as f64 - 1.0) * 0.35 * grid,
+        ];
+        let m = 3 + rng.below(6);
+        rings.push(scaled(star(rng, m), 0.16 * grid, at));
+    }
+    let mut takes = grid >= 1e4;
+    if rings.len() > 1 {
+        match rng.below(10) {
+            0 => {
+                // a hole moved onto the outer ring's first vertex
+                let (h, o) = (1 + rng.below(rings.len() - 1), rings[0][0]);
+                let d = [o[0] - rings[h][0][0], o[1] - rings[h][0][1]];
+                for p in &mut rings[h] {
+                    *p = [p[0] + d[0], p[1] + d[1]];
+                }
+                takes = false;
+            }
+            1 => {
+                // a hole moved out of the polygon
+                let h = 1 + rng.below(rings.len() - 1);
+                for p in &mut rings[h] {
+                    p[0] += 3.0 * grid;
+                }
+                takes = false;
+            }
+            2 => {
+                // a hole inside another, scaled down round its centre
+                let h = 1 + rng.below(rings.len() - 1);
+                let mut inner = rings[h].clone();
+                let c = [
+                    inner.iter().map(|p| p[0]).sum::<f64>() / inner.len() as f64,
+                    inner.iter().map(|p| p[1]).sum::<f64>() / inner.len() as f64,
+                ];
+                for p in &mut inner {
+                    *p = [c[0] + (p[0] - c[0]) * 0.1, c[1] + (p[1] - c[1]) * 0.1];
+                }
+                rings.push(inner);
+                takes = false;
+            }
+            3 => {
+                // the rings in another order: Auto nesting still finds the outer one
+                let k = rng.below(rings.len());
+                rings.swap(0, k);
+                takes &= k == 0;
+            }
+            _ => {}
+        }
+    }
+    let mut vertices = Vec::new();
+    let mut starts = Vec::new();
+    for r in &rings {
+        starts.push(vertices.len());
+        vertices.extend_from_slice(r);
+    }
+    takes &= vertices.len() + 2 * (rings.len() - 1) <= 64;
+    (vertices, starts, takes)
+}
+
+#[test]
+fn polygons_with_holes_agree_and_take_the_stage() {
+    let mut rng = Rng(0x4013_5eed);
+    let (mut with64, mut without64) = pair::<f64>();
+    let (mut with32, mut without32) = pair::<f32>();
+    let (mut taken, mut expected) = (0, 0);
+    for case in 0..3000 {
+        let holes = 1 + rng.below(5);
+        let grid = [8.0, 30.0, 1e4, 1e6][rng.below(4)];
+        let (v, starts, takes) = holed(&mut rng, holes, grid);
+        for nesting in [Nesting::Auto, Nesting::FirstIsOuter] {
+            let tag = format!("holed {case}");
+            let (_, took) = compare_rings(&mut with64, &mut without64, &v, &starts, nesting, &tag);
+            let v32: Vec<[f32; 2]> = v.iter().map(|p| [p[0] as f32, p[1] as f32]).collect();
+            compare_rings(&mut with32, &mut without32, &v32, &starts, nesting, &tag);
+            if takes {
+                assert_eq!(
+                    took, 4,
+                    "{tag}, {nesting:?}: the stage declined {v:?} {starts:?}"
+                );
+                expected += 1;
+            }
+            taken += took;
+        }
+    }
+    assert!(expected > 1000 && taken > 8000, "{expected} {taken}");
+}
+
+/// Every polygon of up to 80 vertices of the glyph datasets, earcut's fixtures and the
+/// named corpus cases (bridging's special cases among them), in four rotations: the stage gives what the pipeline gives, and takes every glyph with
+/// holes that fits it.
+#[test]
+fn glyphs_and_earcut_fixtures_agree() {
+    let corpus = concat!(env!("CARGO_MANIFEST_DIR"), "/../corpus");
+    let mut files: Vec<std::path::PathBuf> = [
+        "datasets/lorem_latin.json",
+        "datasets/lorem_japanese.json",
+        "datasets/letter_a.json",
+    ]
+    .iter()
+    .map(|f| std::path::Path::new(corpus).join(f))
+    .collect();
+    for folder in ["earcut/fixtures", "paper", "cases"] {
+        let mut listed: Vec<_> = std::fs::read_dir(std::path::Path::new(corpus).join(folder))
+            .expect("corpus folder")
+            .map(|e| e.expect("entry").path())
+            .filter(|p| p.extension().is_some_and(|e| e == "json"))
+            .collect();
+        listed.sort();
+        files.extend(listed);
+    }
+    let (mut with, mut without) = pair::<f64>();
+    let (mut with_holes, mut taken) = (0, 0);
+    for file in &files {
+        let text = std::fs::read_to_string(file).expect("readable");
+        let mut value: serde_json::Value = serde_json::from_str(&text).expect("JSON");
+        if value.is_object() {
+            // a named case: its rings
+            value = value["rings"].take();
+        }
+        let polygons: Vec<Vec<Vec<[f64; 2]>>> = if value[0][0][0].is_array() {
+            serde_json::from_value(value).expect("shapes")
+        } else {
+            vec![serde_json::from_value(value).expect("rings")]
+        };
+        for (k, rings) in polygons.iter().enumerate() {
+            let mut vertices = Vec::new();
+            let mut starts = Vec::new();
+            for r in rings {
+                starts.push(vertices.len());
+                vertices.extend_from_slice(r);
+            }
+            if vertices.len() > 80 {
+                continue;
+            }
+            for turn in 0..4 {
+                let v: Vec<[f64; 2]> = vertices
+                    .iter()
+                    .map(|&[x, y]| match turn {
+                        0 => [x, y],
+                        1 => [-y, x],
+                        2 => [-x, -y],
+                        _ => [y, -x],
+                    })
+                    .collect();
+                let tag = format!("{} polygon {k} turn {turn}", file.display());
+                let (_, took) = compare_rings(
+                    &mut with,
+                    &mut without,
+                    &v,
+                    &starts,
+                    Nesting::FirstIsOuter,
+                    &tag,
+                );
+                compare_rings(&mut with, &mut without, &v, &starts, Nesting::Auto, &tag);
+                let glyph = file.starts_with(std::path::Path::new(corpus).join("datasets"));
+                if glyph && starts.len() > 1 && vertices.len() + 2 * (starts.len() - 1) <= 64 {
+                    with_holes += 4;
+                    taken += took;
+                }
+            }
+        }
+    }
+    // the glyphs with holes are valid: nearly all of those that fit are the stage's
+    assert!(
+        with_holes > 200 && taken * 10 > with_holes * 9,
+        "{taken} of {with_holes}"
+    );
 }

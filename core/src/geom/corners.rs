@@ -1,7 +1,8 @@
 //! Exact tests on corners and rays at a vertex: whether a direction leaves a vertex into
-//! the corner between two edges, and whether points lie on one ray from it.
+//! the corner between two edges, whether points lie on one ray from it, and which vertex
+//! a hole's bridge sees at the smallest angle to its ray.
 
-use super::predicates::{orient2d, Orientation, Point};
+use super::predicates::{left_of, orient2d, Orientation, Point};
 
 /// Whether the direction from `o` to `q` lies inside the corner at `o` swept
 /// counter-clockwise from `o → a` to `o → b`: `Some(true)` strictly inside, `Some(false)`
@@ -91,5 +92,93 @@ mod tests {
             corner_contains(o, p(1., 0.), p(-1., 0.), p(0., -1.)),
             Some(false)
         );
+    }
+}
+
+/// Bridging a hole (Eberly's method): the vertex M sees instead of P when the ray from M
+/// towards +x hits edge a → b inside, at I, and P is the edge's endpoint with larger x.
+/// Every vertex inside triangle M, I, P or on segment MP may block the view; the one at
+/// the smallest angle to the ray, then the nearest, is visible. Offer the candidates
+/// with [`LeastAngle::offer`] (after [`LeastAngle::near`], a cheap first look), then read
+/// [`LeastAngle::best`]: P if none blocked it.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct LeastAngle {
+    m: Point,
+    a: Point,
+    b: Point,
+    p: Point,
+    above: bool,
+    /// The triangle's rows.
+    ylo: f64,
+    yhi: f64,
+    /// The side of M → P outside the triangle.
+    outside_mp: Orientation,
+    best: Point,
+}
+
+impl LeastAngle {
+    /// The search from `m` over the triangle of the hit on edge `a` → `b`, whose endpoint
+    /// with larger x is `p`.
+    pub(crate) fn new(m: Point, a: Point, b: Point, p: Point) -> Self {
+        let above = p.y > m.y;
+        let (ylo, yhi) = if above { (m.y, p.y) } else { (p.y, m.y) };
+        // Sides of the triangle: the ray's line (exclusive), the edge's line (exclusive:
+        // M's side), and segment MP (inclusive: a vertex on it blocks the bridge).
+        let outside_mp = if above {
+            Orientation::CounterClockwise
+        } else {
+            Orientation::Clockwise
+        };
+        LeastAngle {
+            m,
+            a,
+            b,
+            p,
+            above,
+            ylo,
+            yhi,
+            outside_mp,
+            best: p,
+        }
+    }
+
+    /// The box the triangle lies in (lower left, upper right), for an index query.
+    pub(crate) fn bounds(&self) -> (Point, Point) {
+        let hi = Point::new(self.a.x.max(self.b.x), self.yhi);
+        (Point::new(self.m.x, self.ylo), hi)
+    }
+
+    /// Whether a vertex at `q` may lie in the triangle, by coordinates alone: strictly
+    /// beside the ray, within its rows, not left of M, and not P.
+    #[inline]
+    pub(crate) fn near(&self, q: Point) -> bool {
+        let beside = if self.above {
+            q.y > self.m.y
+        } else {
+            q.y < self.m.y
+        };
+        beside && q.y >= self.ylo && q.y <= self.yhi && q.x >= self.m.x && q != self.p
+    }
+
+    /// Keeps a vertex at `q` (one [`LeastAngle::near`] accepted) as the best when it lies
+    /// in the triangle at a smaller angle to the ray, or at the same angle nearer.
+    pub(crate) fn offer(&mut self, q: Point) {
+        if !left_of(self.a, self.b, q) || orient2d(self.m, self.p, q) == self.outside_mp {
+            return;
+        }
+        // smaller angle to the ray: clockwise of the best seen from M when above, else
+        // counter-clockwise; the same angle: nearer
+        let better = match orient2d(self.m, self.best, q) {
+            Orientation::Collinear => q.x < self.best.x,
+            t => t == self.outside_mp.reversed(),
+        };
+        if better {
+            self.best = q;
+        }
+    }
+
+    /// The visible vertex's position.
+    pub(crate) fn best(&self) -> Point {
+        self.best
     }
 }

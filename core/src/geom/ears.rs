@@ -1,4 +1,4 @@
-//! The geometry of the ear test, shared by the clip stage and the small-ring stage: the
+//! The geometry of the ear test, shared by the clip stage and the small stage: the
 //! box an ear's candidates must lie in, and whether a vertex spoils an ear.
 
 use super::predicates::{left_of, orient2d, Orientation, Point};
@@ -6,7 +6,7 @@ use super::predicates::{left_of, orient2d, Orientation, Point};
 /// The fuzzing experiment, never enabled otherwise: built with
 /// `RUSTFLAGS="--cfg polytri_planted_bug"`, the ear test misses reflex vertices on the
 /// right edge of the ear's bounding box (an off-by-one, `<` for `<=`; the clip stage's grid
-/// does not use [`near`], so only unindexed tests, as for small rings, have the bug), and
+/// does not use [`near`], so only unindexed tests, as for small polygons, have the bug), and
 /// the fuzz targets must find it (see `docs/harness.md`). A cfg rather than a feature, so
 /// that `--all-features` never plants it.
 const PLANTED_BUG: bool = cfg!(polytri_planted_bug);

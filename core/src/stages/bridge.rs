@@ -28,8 +28,8 @@
 use core::cmp::Ordering;
 
 use crate::context::Context;
-use crate::geom::{compare_hits, corner_contains, on_ray};
-use crate::geom::{left_of, orient2d, Orientation, Point};
+use crate::geom::{compare_hits, corner_contains, on_ray, LeastAngle};
+use crate::geom::{left_of, Point};
 use crate::structures::NodeId;
 use crate::Error;
 
@@ -359,7 +359,8 @@ fn consider_hit(cx: &Context, pm: Point, a: NodeId, best: &mut Option<(NodeId, N
 }
 
 /// Among the vertices of `component` inside triangle M, I, P (I: the hit on edge a → b) or
-/// on segment MP, the one at the smallest angle to the ray, then the nearest; P if none.
+/// on segment MP, the one at the smallest angle to the ray, then the nearest; P if none
+/// (see [`LeastAngle`]).
 fn least_angle_in_triangle(
     cx: &Context,
     pm: Point,
@@ -368,44 +369,20 @@ fn least_angle_in_triangle(
     p: Point,
     component: u32,
 ) -> Point {
-    let above = p.y > pm.y;
-    let (ylo, yhi) = if above { (pm.y, p.y) } else { (p.y, pm.y) };
-    // Sides of the triangle: the ray's line (exclusive), the edge's line (exclusive: M's
-    // side), and segment MP (inclusive: a vertex on it blocks the bridge).
-    let outside_mp = if above {
-        Orientation::CounterClockwise
-    } else {
-        Orientation::Clockwise
-    };
-    let mut best = p;
-    let box_lo = Point::new(pm.x, ylo);
-    let box_hi = Point::new(pa.x.max(pb.x), yhi);
-    for r in cx.edge_index.query(box_lo, box_hi) {
+    let mut search = LeastAngle::new(pm, pa, pb, p);
+    let (lo, hi) = search.bounds();
+    for r in cx.edge_index.query(lo, hi) {
         // the position first: most candidates fail there, without a look at their ring
         let node = cx.pool.get(r);
-        let q = node.p;
-        let strictly_beside_ray = if above { q.y > pm.y } else { q.y < pm.y };
-        if !strictly_beside_ray || q.y < ylo || q.y > yhi || q.x < pm.x || q == p {
+        if !search.near(node.p) {
             continue;
         }
         if node.removed || cx.rings[node.ring as usize].component != component {
             continue;
         }
-        if !left_of(pa, pb, q) || orient2d(pm, p, q) == outside_mp {
-            continue;
-        }
-        // smaller angle to the ray: clockwise of the best seen from M when above, else
-        // counter-clockwise; the same angle: nearer
-        let turn = orient2d(pm, best, q);
-        let better = match turn {
-            Orientation::Collinear => q.x < best.x,
-            t => t == outside_mp.reversed(),
-        };
-        if better {
-            best = q;
-        }
+        search.offer(node.p);
     }
-    best
+    search.best()
 }
 
 /// The merged node at position `target` whose corner contains the direction towards M:

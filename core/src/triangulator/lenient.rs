@@ -1,12 +1,13 @@
 //! How a call runs the pipeline — and lenient mode's reruns on crossing input.
 //!
-//! One small ring (up to 64 vertices, no holes) goes to the `small` stage alone, which
-//! gives the pipeline's result or hands the input back. Otherwise strict mode, and
+//! One small polygon (up to 64 vertices, a few holes) goes to the `small` stage alone,
+//! which gives the pipeline's result or hands the input back. Otherwise strict mode, and
 //! lenient mode on input whose edges do not cross, run the pipeline once ([`run`]); in
 //! lenient mode, a second time with every ring whole when cutting rings into their lobes
-//! made two rings double each other (see [`prepare`]). Crossing edges have no exact triangulation; lenient mode then looks for the
-//! best effort, judged by earcut's deviation (how far the triangles' area is from the
-//! input's, [`crate::deviation`]). The policy:
+//! made two rings double each other (see [`prepare`]). Crossing edges have no exact
+//! triangulation; lenient mode then looks for the best effort, judged by earcut's
+//! deviation (how far the triangles' area is from the input's, [`crate::deviation`]).
+//! The policy:
 //!
 //! 1. **The plain run**: bow ties as given, and clipping twice from the same bridged
 //!    rings — once as usual, once with ears at crossed edges deferred until nothing else
@@ -97,7 +98,7 @@ pub(crate) struct Outcome {
     pub deviation: f64,
 }
 
-/// Runs one call: the small-ring stage, or the pipeline once, and on crossing lenient
+/// Runs one call: the small stage, or the pipeline once, and on crossing lenient
 /// input the reruns the policy above allows.
 pub(crate) fn triangulate<T: Coord>(
     cx: &mut Context,
@@ -110,7 +111,16 @@ pub(crate) fn triangulate<T: Coord>(
 ) -> Result<Outcome, Error> {
     let quality = options.strategy == Strategy::Quality;
     if (quality || options.strategy == Strategy::Fast)
-        && pipeline::small_ring(cx, st, vertices, ring_starts, quality, options.lenient, out)
+        && pipeline::small_ring(
+            cx,
+            st,
+            vertices,
+            ring_starts,
+            options.nesting,
+            quality,
+            options.lenient,
+            out,
+        )
     {
         // valid input: a lenient run is measured all the same, as the pipeline's is
         let deviation = if options.lenient {
@@ -120,7 +130,7 @@ pub(crate) fn triangulate<T: Coord>(
         };
         return Ok(Outcome {
             polygons: 1,
-            holes: 0,
+            holes: small::hole_count(&st.small),
             deviation,
         });
     }

@@ -154,7 +154,7 @@ impl<T: Coord> Triangulator<T> {
         nesting: crate::Nesting,
     ) -> Result<(), Error> {
         let w = &mut self.worker;
-        if pipeline::small_ring_valid(&mut w.cx, &mut w.stages, vertices, ring_starts) {
+        if pipeline::small_ring_valid(&mut w.cx, &mut w.stages, vertices, ring_starts, nesting) {
             return Ok(());
         }
         w.cx.keep_collinear = false;
@@ -235,14 +235,14 @@ impl<T: Coord> Triangulator<T> {
     }
 
     /// Lets `triangulate` and `check` take one ring of a few dozen vertices through the
-    /// small-ring stage (the default), or always through the whole pipeline, which gives
+    /// small stage (the default), or always through the whole pipeline, which gives
     /// the same result: for tests that hold the two to it. Not part of the stable API.
     #[doc(hidden)]
     pub fn set_small_rings(&mut self, on: bool) {
         self.worker.stages.small.off = !on;
     }
 
-    /// Whether the last `triangulate` or `check` call was the small-ring stage's alone
+    /// Whether the last `triangulate` or `check` call was the small stage's alone
     /// (see [`Triangulator::set_small_rings`]). Not part of the stable API.
     #[doc(hidden)]
     pub fn small_ring_took_last(&self) -> bool {

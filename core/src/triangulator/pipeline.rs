@@ -4,8 +4,9 @@
 //! load ─► clean ─► [lobes] ─► clean::orient_rings ─► nest ─► touch ─► bridge ─► clip
 //! ```
 //!
-//! One ring of a few dozen vertices takes the `small` stage instead, which does all of
-//! that in one pass and hands back to the pipeline whatever it does not handle.
+//! One polygon of a few dozen vertices (an outer ring and a few holes) takes the `small`
+//! stage instead, which does all of that in one pass and hands back to the pipeline
+//! whatever it does not handle.
 //!
 //! Only this module and [`super::lenient`] call stages. Each stage leaves its guarantee
 //! in the shared [`Context`] for the next (see `ARCHITECTURE.md`).
@@ -28,15 +29,17 @@ pub(crate) struct Stages {
     pub small: small::Scratch,
 }
 
-/// The small-ring stage in place of the pipeline, for one ring of at most `small::MAX`
-/// vertices: whether it proved the input valid and triangulated it into `out` (with the
-/// triangles of the fast strategy, or with `quality` the quality one's). When not, the
-/// pipeline must run from the start.
+/// The small stage in place of the pipeline, for one small polygon (see [`small::fits`]):
+/// whether it proved the input valid and triangulated it into `out` (with the triangles
+/// of the fast strategy, or with `quality` the quality one's). When not, the pipeline
+/// must run from the start.
+#[allow(clippy::too_many_arguments)] // the call's input, its options and its output
 pub(crate) fn small_ring<T: Coord>(
     cx: &mut Context,
     st: &mut Stages,
     vertices: &[[T; 2]],
     ring_starts: &[usize],
+    nesting: Nesting,
     quality: bool,
     lenient: bool,
     out: &mut Vec<[u32; 3]>,
@@ -48,21 +51,22 @@ pub(crate) fn small_ring<T: Coord>(
     #[cfg(not(feature = "threads"))]
     let rounds = false;
     st.small.took = !rounds
-        && small_ring_valid(cx, st, vertices, ring_starts)
-        && small::clip(&st.small, quality, lenient, out);
+        && small_ring_valid(cx, st, vertices, ring_starts, nesting)
+        && small::clip(&mut st.small, quality, lenient, out);
     st.small.took
 }
 
-/// Strict mode's input check by the small-ring stage: `true` when it proved the input
-/// valid; when not, [`check_input`] must decide.
+/// Strict mode's input check by the small stage: `true` when it proved the input valid;
+/// when not, [`check_input`] must decide.
 pub(crate) fn small_ring_valid<T: Coord>(
     cx: &mut Context,
     st: &mut Stages,
     vertices: &[[T; 2]],
     ring_starts: &[usize],
+    nesting: Nesting,
 ) -> bool {
     st.small.took = small::fits(&st.small, vertices.len(), ring_starts)
-        && small::check(cx, &mut st.small, vertices);
+        && small::check(cx, &mut st.small, vertices, ring_starts, nesting);
     st.small.took
 }
 

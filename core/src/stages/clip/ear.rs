@@ -1,6 +1,6 @@
 //! The exact geometry of the clipper's repairs: whether a direction leaves a node into the
 //! polygon, and the winding number next to a vertex. (Which vertex spoils an ear is
-//! `geom::interferes`, shared with the small-ring stage.)
+//! `geom::interferes`, shared with the small stage.)
 
 use crate::geom::{corner_contains, orient2d, Orientation, Point};
 use crate::structures::{NodeId, Pool};

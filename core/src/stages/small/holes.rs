@@ -1,0 +1,184 @@
+//! Steps 5 and 6 of the small stage: which ring is the polygon's boundary and which are
+//! its holes (as `nest` decides them, for rings that meet nowhere), and the bridges from
+//! the holes to the ring around them (as `bridge` chooses them). Whatever the pipeline
+//! would decide by a rule this stage does not repeat — a hole inside a hole, several
+//! outer rings, a target picked by a fallback — hands the input back.
+
+use core::cmp::Ordering;
+
+use super::{bit, reverse, Scratch, RINGS};
+use crate::geom::{
+    compare_hits, corner_contains, left_of, orient2d, LeastAngle, Orientation, Point,
+};
+use crate::Nesting;
+
+/// Step 5: decides the rings' roles by containment — exactly one ring contains every
+/// other, and no other contains another — and turns the holes clockwise. `false`
+/// otherwise, or when `FirstIsOuter` names another ring the boundary (the pipeline then
+/// reports or repairs it). The rings meet nowhere, so one vertex of a ring decides for
+/// all of it, and it lies on no other ring: crossing parity is exact.
+pub(super) fn nest(s: &mut Scratch, nesting: Nesting) -> bool {
+    let mut outer = None;
+    for b in 0..s.rings {
+        let q = s.p[usize::from(s.start[b])];
+        let depth = (0..s.rings).filter(|&r| r != b && inside(s, r, q)).count();
+        match depth {
+            0 if outer.is_none() => outer = Some(b),
+            1 => {}
+            _ => return false,
+        }
+    }
+    let Some(outer) = outer else {
+        return false;
+    };
+    if nesting == Nesting::FirstIsOuter && outer != 0 {
+        return false;
+    }
+    // (every hole has depth 1, so it lies in the outer ring: one hole inside another
+    // would have depth 2)
+    s.outer = outer;
+    for r in (0..s.rings).filter(|&r| r != outer) {
+        reverse(s, r);
+    }
+    true
+}
+
+/// Whether `q`, on no edge of ring `r`, lies inside it: the ray from `q` towards +x
+/// crosses it an odd number of times (half-open in y: a vertex on the ray counts once).
+fn inside(s: &Scratch, r: usize, q: Point) -> bool {
+    let mut odd = false;
+    for v in s.ring(r) {
+        let (a, b) = (s.p[v], s.p[s.next(v)]);
+        if (a.y <= q.y) != (b.y <= q.y) {
+            // upwards, the crossing is right of q when q is left of the edge
+            let left = orient2d(a, b, q) == Orientation::CounterClockwise;
+            odd ^= left == (b.y > a.y);
+        }
+    }
+    odd
+}
+
+/// Step 6: merges every hole into the outer ring, in `bridge`'s order (descending
+/// rightmost x, then lower y, then ring number), each through a two-way bridge from its
+/// rightmost vertex M to the node `bridge` connects it to. The bridge's two new nodes
+/// follow the others, the copy of the target first, as the pool numbers them. `false`
+/// where the pipeline would choose by a fallback.
+pub(super) fn bridge(s: &mut Scratch) -> bool {
+    let mut order = [0u8; RINGS];
+    let mut holes = 0;
+    for r in (0..s.rings).filter(|&r| r != s.outer) {
+        order[holes] = r as u8;
+        holes += 1;
+    }
+    let key = |s: &Scratch, r: u8| s.p[usize::from(s.rightmost[usize::from(r)])];
+    let order = &mut order[..holes];
+    // (an insertion sort: a handful of holes)
+    for i in 1..order.len() {
+        let mut j = i;
+        while j > 0 && {
+            let (a, b) = (order[j - 1], order[j]);
+            let (pa, pb) = (key(s, a), key(s, b));
+            (pb.x
+                .total_cmp(&pa.x)
+                .then(pa.y.total_cmp(&pb.y))
+                .then(a.cmp(&b)))
+                == Ordering::Greater
+        } {
+            order.swap(j - 1, j);
+            j -= 1;
+        }
+    }
+    let mut merged = ring_mask(s, s.outer);
+    for &hole in order.iter() {
+        let hole = usize::from(hole);
+        let m = usize::from(s.rightmost[hole]);
+        let Some(x) = target(s, merged, m) else {
+            return false;
+        };
+        // (the hole's nodes, before the split links its ring into the outer one)
+        let hole_nodes = ring_mask(s, hole);
+        // `Pool::split`: x → m … m's predecessor → m2 → x2 → x's old successor
+        let (xn, mp) = (s.next(x), s.prev(m));
+        let (x2, m2) = (s.nodes, s.nodes + 1);
+        s.nodes += 2;
+        for (copy, of) in [(x2, x), (m2, m)] {
+            s.p[copy] = s.p[of];
+            s.vertex[copy] = s.vertex[of];
+        }
+        s.next[x] = m as u8;
+        s.prev[m] = x as u8;
+        s.next[mp] = m2 as u8;
+        (s.prev[m2], s.next[m2]) = (mp as u8, x2 as u8);
+        (s.prev[x2], s.next[x2]) = (m2 as u8, xn as u8);
+        s.prev[xn] = x2 as u8;
+        merged |= hole_nodes | bit(x2) | bit(m2);
+        s.fresh |= bit(x) | bit(m) | bit(x2) | bit(m2);
+    }
+    true
+}
+
+/// The live nodes of ring `r` (before it is bridged).
+fn ring_mask(s: &Scratch, r: usize) -> u64 {
+    s.ring(r).fold(0, |mask, v| mask | bit(v))
+}
+
+/// The merged node hole vertex `m` connects to (`bridge::find_hole_bridge`): the ray from
+/// M towards +x hits the nearest upward edge with M on its inner side; at a vertex, that
+/// one, else the edge's endpoint P with larger x or the vertex in triangle M, I, P at the
+/// least angle to the ray; there, the node whose corner holds the direction to M. `None`
+/// when the ray hits nothing, or no node's corner holds M strictly, or more than one does.
+fn target(s: &Scratch, merged: u64, m: usize) -> Option<usize> {
+    let pm = s.p[m];
+    let mut best: Option<(Point, Point)> = None;
+    for a in nodes(merged) {
+        let (pa, pb) = (s.p[a], s.p[s.next(a)]);
+        if !(pa.y <= pm.y && pm.y <= pb.y && pa.y < pb.y && left_of(pa, pb, pm)) {
+            continue;
+        }
+        // (a tie is a hit at one vertex, which both edges give as the target)
+        let nearer = match best {
+            Some((c, d)) => compare_hits(pm.y, c, d, pa, pb) == Ordering::Less,
+            None => true,
+        };
+        if nearer {
+            best = Some((pa, pb));
+        }
+    }
+    let (pa, pb) = best?;
+    let target = if pa.y == pm.y {
+        pa
+    } else if pb.y == pm.y {
+        pb
+    } else {
+        // (`bridge::least_angle_in_triangle` over the merged nodes)
+        let p = if pb.x > pa.x { pb } else { pa };
+        let mut search = LeastAngle::new(pm, pa, pb, p);
+        for q in nodes(merged).map(|r| s.p[r]) {
+            if search.near(q) {
+                search.offer(q);
+            }
+        }
+        search.best()
+    };
+    let mut found = None;
+    for x in nodes(merged).filter(|&x| s.p[x] == target) {
+        if corner_contains(target, s.p[s.next(x)], s.p[s.prev(x)], pm) == Some(true) {
+            if found.is_some() {
+                return None;
+            }
+            found = Some(x);
+        }
+    }
+    found
+}
+
+/// The nodes of a mask, lowest first.
+fn nodes(mut mask: u64) -> impl Iterator<Item = usize> {
+    core::iter::from_fn(move || {
+        (mask != 0).then(|| {
+            let v = mask.trailing_zeros() as usize;
+            mask &= mask - 1;
+            v
+        })
+    })
+}

@@ -1,0 +1,430 @@
+//! Stage *small*, in place of all the others for one small polygon: an outer ring and
+//! up to [`RINGS`]` - 1` holes directly inside it, of at most [`MAX`] vertices with the
+//! bridges' copies (a county, a building, most glyphs) in one pass over a few compact
+//! arrays.
+//!
+//! The pipeline's stages are built for any number of rings of any size; on a polygon of
+//! a dozen vertices their set-up costs more than their work. This stage does what they do
+//! for such a polygon, in the same order and with the same exact predicates, and gives the
+//! same result: the same triangles in the same order, the same dropped vertices.
+//!
+//! 1. **Load** the vertices, widened to `f64` (exact), each ring linked by one-byte indices.
+//! 2. **Filter** repeated and straight vertices exactly as `clean` does, in its order.
+//! 3. **Prove** that no two edges meet, other than neighbours at their shared vertex:
+//!    every pair whose boxes overlap is decided by exact signs.
+//! 4. **Orient** every ring counter-clockwise by the turn at its rightmost-lowest vertex.
+//! 5. **Nest** (`holes`): one ring must contain all the others, and none of those another
+//!    (by exact crossing parity); the holes are turned clockwise.
+//! 6. **Bridge** (`holes`) every hole to the ring around it as `bridge` does: by
+//!    descending rightmost x, the ray's nearest hit, the same visible vertex, the same two
+//!    copies.
+//! 7. **Clip** with the strategy's walk (`walk`): the fast one with the same start, the
+//!    same "not an ear" marks, the same order of ears and the same fan at the end; the
+//!    quality one with the same queue order (smallest angle rank, then node). Reflex,
+//!    marked and removed nodes are 64-bit masks; where a bridge's ends come together, the
+//!    walk tidies repeated positions and walls as the clipper does.
+//!
+//! Whatever the pipeline would treat specially makes the stage give up (`false`) before
+//! writing anything the pipeline would not: non-finite coordinates, a spike or a ring
+//! left with fewer than three vertices, two edges meeting (a crossing, a touch, a
+//! repeated position), rings nested otherwise, a bridge target the pipeline would choose
+//! by a fallback, a clockwise last triangle or a ring the walk cannot finish. The
+//! triangulator then runs the pipeline from the start, which finds and reports the same
+//! things as without this stage. `core/tests/small.rs` holds the two to the same output.
+
+use crate::context::Context;
+use crate::geom::{
+    approx_cross, boxed_segments_meet, orient2d, within_box, Coord, Orientation, Point,
+};
+use crate::report::{DropReason, Dropped};
+use crate::Nesting;
+
+mod holes;
+mod walk;
+
+pub(crate) use walk::clip_ring;
+
+/// The most nodes the stage holds: the input's vertices (a closing point included) and
+/// two copies per hole. Its node masks fit one `u64`, its links one byte each.
+pub(crate) const MAX: usize = 64;
+
+/// The most rings: the outer one and its holes.
+pub(crate) const RINGS: usize = 8;
+
+/// The stage's arrays, by node index: the input's vertices first (node i is vertex i),
+/// then the copies the bridges make.
+#[derive(Debug)]
+pub(crate) struct Scratch {
+    p: [Point; MAX],
+    next: [u8; MAX],
+    prev: [u8; MAX],
+    /// The input vertex of each node (a copy repeats its original's).
+    vertex: [u8; MAX],
+    /// The nodes in use: the vertices, then the bridges' copies.
+    nodes: usize,
+    /// The rings: how many, where each starts in the input (and the end), a live node
+    /// where the filtered ring starts, its live vertices and its rightmost-lowest node.
+    rings: usize,
+    first: [u8; RINGS + 1],
+    start: [u8; RINGS],
+    len: [u8; RINGS],
+    rightmost: [u8; RINGS],
+    /// The ring containing the others.
+    outer: usize,
+    /// The edges' boxes for the proof, ring after ring, each in ring order from its start:
+    /// x0, x1, y0, y1.
+    boxes: [[f64; 4]; MAX],
+    /// The start node of each of those edges.
+    from: [u8; MAX],
+    /// The nodes turning left (counter-clockwise) on their filtered ring, as it ran before
+    /// `orient`; every other live node turns right (none is straight).
+    left: u64,
+    /// The nodes whose ring runs against its input order now (turned by `orient`, or as a
+    /// hole), so that they turn the other way.
+    reversed: u64,
+    /// The nodes whose turn the bridges changed (their ends and the ends' copies).
+    fresh: u64,
+    /// Twice the polygon's area as lenient mode sums it (see [`double_area`]).
+    area: f64,
+    /// Declines every input, for tests holding the stage to the pipeline.
+    pub off: bool,
+    /// The last call was the stage's (for tests: that it takes what it should).
+    pub took: bool,
+}
+
+impl Default for Scratch {
+    fn default() -> Self {
+        Scratch {
+            p: [Point::new(0.0, 0.0); MAX],
+            next: [0; MAX],
+            prev: [0; MAX],
+            vertex: [0; MAX],
+            nodes: 0,
+            rings: 0,
+            first: [0; RINGS + 1],
+            start: [0; RINGS],
+            len: [0; RINGS],
+            rightmost: [0; RINGS],
+            outer: 0,
+            boxes: [[0.0; 4]; MAX],
+            from: [0; MAX],
+            left: 0,
+            reversed: 0,
+            fresh: 0,
+            area: 0.0,
+            off: false,
+            took: false,
+        }
+    }
+}
+
+impl Scratch {
+    fn next(&self, v: usize) -> usize {
+        usize::from(self.next[v])
+    }
+
+    fn prev(&self, v: usize) -> usize {
+        usize::from(self.prev[v])
+    }
+
+    /// Unlinks `v` from its ring.
+    fn unlink(&mut self, v: usize) {
+        let (p, n) = (self.prev[v], self.next[v]);
+        self.next[usize::from(p)] = n;
+        self.prev[usize::from(n)] = p;
+    }
+
+    /// The live nodes of ring `r`, from its start.
+    fn ring(&self, r: usize) -> impl Iterator<Item = usize> + '_ {
+        let mut v = usize::from(self.start[r]);
+        (0..self.len[r]).map(move |_| {
+            let at = v;
+            v = self.next(v);
+            at
+        })
+    }
+}
+
+const fn bit(v: usize) -> u64 {
+    1 << v
+}
+
+/// Whether the stage can take this input: one ring of 3 to [`MAX`] vertices, or up to
+/// [`RINGS`] rings of at least three vertices each whose vertices and two copies per hole
+/// fit [`MAX`] nodes.
+pub(crate) fn fits(s: &Scratch, vertices: usize, ring_starts: &[usize]) -> bool {
+    if s.off || ring_starts.first() != Some(&0) || ring_starts.len() > RINGS {
+        return false;
+    }
+    let rings = ring_starts.len();
+    if rings == 1 {
+        return (3..=MAX).contains(&vertices);
+    }
+    vertices + 2 * (rings - 1) <= MAX
+        && (ring_starts.windows(2).all(|w| w[1] >= w[0] + 3))
+        && ring_starts[rings - 1] + 3 <= vertices
+}
+
+/// Steps 1–5: loads, filters, proves, orients and nests the rings (strict mode's input
+/// check). Records the dropped vertices in `cx.dropped` (cleared first). `false` when the
+/// input needs the pipeline; then `cx` holds nothing the pipeline reads (it resets it).
+/// The caller has asked [`fits`].
+pub(crate) fn check<T: Coord>(
+    cx: &mut Context,
+    s: &mut Scratch,
+    vertices: &[[T; 2]],
+    ring_starts: &[usize],
+    nesting: Nesting,
+) -> bool {
+    let n = vertices.len();
+    cx.dropped.clear();
+    cx.repairs.clear();
+    // 1. load, as `load` does (−0.0 read as +0.0)
+    for (i, v) in vertices.iter().enumerate() {
+        let p = Point::new(v[0].to_f64() + 0.0, v[1].to_f64() + 0.0);
+        if !(p.x.is_finite() && p.y.is_finite()) {
+            return false;
+        }
+        s.p[i] = p;
+        // (n ≤ 64: every index fits a byte)
+        s.next[i] = (i + 1) as u8;
+        s.prev[i] = i.wrapping_sub(1) as u8;
+        s.vertex[i] = i as u8;
+    }
+    s.rings = ring_starts.len();
+    s.nodes = n;
+    (s.left, s.reversed, s.fresh) = (0, 0, 0);
+    for r in 0..s.rings {
+        let (f, e) = (ring_starts[r], ring_starts.get(r + 1).copied().unwrap_or(n));
+        (s.first[r], s.first[r + 1]) = (f as u8, e as u8);
+        (s.next[e - 1], s.prev[f]) = (f as u8, (e - 1) as u8);
+        if !filter(cx, s, r) {
+            return false;
+        }
+    }
+    let proved = if s.rings == 1 {
+        star_shaped(s) || apart(s)
+    } else {
+        apart(s)
+    };
+    if !proved {
+        return false;
+    }
+    for r in 0..s.rings {
+        orient(s, r);
+    }
+    s.outer = 0;
+    s.rings == 1 || holes::nest(s, nesting)
+}
+
+/// Step 2 for ring `r`, `clean`'s filter (`filter_ring`) move for move: the same vertices
+/// dropped, in the same order, and the same start. `false` on a spike, or when fewer than
+/// three vertices are left.
+fn filter(cx: &mut Context, s: &mut Scratch, r: usize) -> bool {
+    let mut len = usize::from(s.first[r + 1] - s.first[r]);
+    let mut v = usize::from(s.first[r]);
+    // the last vertex known good; a full lap without a drop ends the loop
+    let mut stop = s.prev(v);
+    let drop = |cx: &mut Context, s: &mut Scratch, v: usize, reason: DropReason| {
+        s.unlink(v);
+        cx.dropped.push(Dropped {
+            vertex: v as u32,
+            ring: r as u32,
+            reason,
+        });
+    };
+    while len >= 3 {
+        let (prev, next) = (s.prev(v), s.next(v));
+        let (pp, pn, px) = (s.p[prev], s.p[v], s.p[next]);
+        let reason = if pp == pn {
+            DropReason::Repeated
+        } else if pn == px {
+            // the later of two repeated vertices (a closing point, typically)
+            drop(cx, s, next, DropReason::Repeated);
+            len -= 1;
+            stop = prev;
+            continue;
+        } else if let Some(left) = left_turn(orient2d(pp, pn, px)) {
+            // the last turn taken at each vertex is its turn on the filtered ring: once
+            // nothing is dropped any more, the walk goes round once more
+            s.left = (s.left & !bit(v)) | (u64::from(left) << v);
+            if v == stop {
+                break;
+            }
+            v = next;
+            continue;
+        } else if within_box(pp, px, pn) {
+            DropReason::Collinear
+        } else {
+            // a spike: strict mode looks for a crossing it hid
+            return false;
+        };
+        drop(cx, s, v, reason);
+        len -= 1;
+        // the previous vertex may have become straight: look again
+        v = prev;
+        stop = s.prev(prev);
+    }
+    s.start[r] = v as u8;
+    s.len[r] = len as u8;
+    len >= 3
+}
+
+/// Whether a turn is to the left; `None` when straight.
+fn left_turn(o: Orientation) -> Option<bool> {
+    match o {
+        Orientation::CounterClockwise => Some(true),
+        Orientation::Clockwise => Some(false),
+        Orientation::Collinear => None,
+    }
+}
+
+/// Step 3 for most single small rings in O(n): whether the filtered ring is star-shaped
+/// from the mean of its vertices, c, which proves it simple. If every edge turns strictly
+/// the same way round c and the edges wind round c exactly once, their angular sectors
+/// (each less than a half-turn) tile the turn round c without overlapping: edges that are
+/// no neighbours lie in disjoint sectors and cannot meet, and neighbours meet only on the
+/// ray through their shared vertex, at that vertex. (The mean is only a guess at a point
+/// of the kernel; the signs decide.) Counting the winding is exact too: with every edge
+/// going counter-clockwise round c, exactly the edges from below (or on) c's horizontal
+/// line to above it cross that line right of c.
+fn star_shaped(s: &Scratch) -> bool {
+    let len = usize::from(s.len[0]);
+    let (mut sx, mut sy) = (0.0, 0.0);
+    for v in s.ring(0) {
+        (sx, sy) = (sx + s.p[v].x, sy + s.p[v].y);
+    }
+    let c = Point::new(sx / len as f64, sy / len as f64);
+    if !(c.x.is_finite() && c.y.is_finite()) {
+        return false;
+    }
+    let v = usize::from(s.start[0]);
+    let first = orient2d(c, s.p[v], s.p[s.next(v)]);
+    if first == Orientation::Collinear {
+        return false;
+    }
+    // counted for the ring as it runs: crossings upwards if it runs counter-clockwise
+    // round c, downwards if clockwise
+    let up = first == Orientation::CounterClockwise;
+    let mut crossings = 0;
+    for v in s.ring(0) {
+        let (a, b) = (s.p[v], s.p[s.next(v)]);
+        if orient2d(c, a, b) != first {
+            return false;
+        }
+        let (low, high) = if up { (a, b) } else { (b, a) };
+        crossings += usize::from(low.y <= c.y && c.y < high.y);
+    }
+    crossings == 1
+}
+
+/// Step 3: whether no two edges of the filtered rings meet, other than neighbours on one
+/// ring at their shared vertex (which, with no straight turn left, is all neighbours have
+/// in common). Then no two vertices share a position either.
+fn apart(s: &mut Scratch) -> bool {
+    // the rings' edges one after the other; `ends[r]` is where ring r's end
+    let mut ends = [0; RINGS];
+    let mut k = 0;
+    for (r, end) in ends.iter_mut().enumerate().take(s.rings) {
+        let mut v = usize::from(s.start[r]);
+        for _ in 0..s.len[r] {
+            let (a, b) = (s.p[v], s.p[s.next(v)]);
+            s.boxes[k] = [a.x.min(b.x), a.x.max(b.x), a.y.min(b.y), a.y.max(b.y)];
+            s.from[k] = v as u8;
+            v = s.next(v);
+            k += 1;
+        }
+        *end = k;
+    }
+    let total = k;
+    let mut ring_start = 0;
+    for &end in ends.iter().take(s.rings) {
+        for k in ring_start..end {
+            let [x0, x1, y0, y1] = s.boxes[k];
+            // not the next edge of the ring, nor (for its first) its last: neighbours
+            let (from, skip) = if k == ring_start {
+                (k + 2, end - 1)
+            } else if k + 1 == end {
+                (k + 1, usize::MAX)
+            } else {
+                (k + 2, usize::MAX)
+            };
+            for m in from..total {
+                let [u0, u1, w0, w1] = s.boxes[m];
+                if u0 <= x1 && x0 <= u1 && w0 <= y1 && y0 <= w1 && m != skip {
+                    let (e, f) = (usize::from(s.from[k]), usize::from(s.from[m]));
+                    let (a, b) = (s.p[e], s.p[s.next(e)]);
+                    let (c, d) = (s.p[f], s.p[s.next(f)]);
+                    if boxed_segments_meet(a, b, c, d) {
+                        return false;
+                    }
+                }
+            }
+        }
+        ring_start = end;
+    }
+    true
+}
+
+/// Step 4 for ring `r`, as `clean` orients a ring: the turn at the rightmost-lowest vertex
+/// (there is one: no two vertices share a position) says whether the ring runs
+/// clockwise; then every link is reversed.
+fn orient(s: &mut Scratch, r: usize) {
+    let start = usize::from(s.start[r]);
+    let mut best = start;
+    for v in s.ring(r) {
+        let (p, b) = (s.p[v], s.p[best]);
+        if p.x > b.x || (p.x == b.x && p.y < b.y) {
+            best = v;
+        }
+    }
+    s.rightmost[r] = best as u8;
+    // (its turn, as the filter took it)
+    if s.left & bit(best) == 0 {
+        reverse(s, r);
+    }
+}
+
+/// Reverses ring `r`'s links.
+fn reverse(s: &mut Scratch, r: usize) {
+    let mut v = usize::from(s.start[r]);
+    for _ in 0..s.len[r] {
+        let next = s.next(v);
+        core::mem::swap(&mut s.next[v], &mut s.prev[v]);
+        s.reversed ^= bit(v);
+        v = next;
+    }
+}
+
+/// The number of holes of the polygon checked last.
+pub(crate) fn hole_count(s: &Scratch) -> usize {
+    s.rings - 1
+}
+
+/// Twice the polygon's area as lenient mode sums it (outer ring minus holes, each by the
+/// shoelace formula from the ring's start, in floating point, in ring order): what the
+/// deviation is measured against. Set by [`clip`].
+pub(crate) fn double_area(s: &Scratch) -> f64 {
+    s.area
+}
+
+/// Steps 6 and 7: bridges the checked polygon's holes and clips it into `out` (cleared
+/// first) with the strategy's walk, the fast one or the quality one. `false` when a
+/// bridge or the walk needs the pipeline, or the last triangle turns clockwise (in strict
+/// mode): its repairs or errors decide then.
+pub(crate) fn clip(s: &mut Scratch, quality: bool, lenient: bool, out: &mut Vec<[u32; 3]>) -> bool {
+    if lenient {
+        s.area = 0.0;
+        for r in 0..s.rings {
+            let mut sum = 0.0;
+            for v in s.ring(r) {
+                sum += approx_cross(s.p[v], s.p[s.next(v)]);
+            }
+            s.area += if r == s.outer { sum.abs() } else { -sum.abs() };
+        }
+    }
+    if s.rings > 1 && !holes::bridge(s) {
+        return false;
+    }
+    clip_ring(s, quality, lenient, out)
+}

@@ -1,0 +1,295 @@
+//! Step 7 of the small stage: the clipper's walks (`clip`'s `Clipper::fast` and
+//! `Clipper::quality`) on the one ring the polygon is after bridging, over byte links and
+//! node masks. A bridge repeats the positions of its ends; a cut that would bring two
+//! nodes of one position next to each other, or make a wall (out and straight back),
+//! needs the clipper's tidying, and hands the polygon back instead (the fixtures, glyphs
+//! and generated polygons of `core/tests/small.rs` never get there).
+
+use super::{bit, Scratch, MAX};
+use crate::geom::{approx_angle_rank, bounds, interferes, near, orient2d, Orientation, Point};
+
+/// Clips the checked (and bridged) polygon into `out` (cleared first) with the strategy's
+/// walk. `false` when the walk gets stuck or needs tidying, the bridges left a wall to
+/// remove first, or the last triangle turns clockwise (in strict mode): the pipeline's
+/// tidying, repairs or errors decide then.
+pub(crate) fn clip_ring(
+    s: &Scratch,
+    quality: bool,
+    lenient: bool,
+    out: &mut Vec<[u32; 3]>,
+) -> bool {
+    out.clear();
+    let len = (0..s.rings).map(|r| usize::from(s.len[r])).sum::<usize>() + 2 * (s.rings - 1);
+    let mut w = Walk {
+        s,
+        next: s.next,
+        prev: s.prev,
+        reflex: 0,
+        not_ear: 0,
+        len,
+        no_fan: false,
+        out,
+    };
+    let Some(start) = w.classify() else {
+        return false;
+    };
+    let last = if quality {
+        w.quality(start)
+    } else {
+        w.fast(start)
+    };
+    match last {
+        Some(Some(last)) => w.finish(last, lenient),
+        Some(None) => true,
+        None => false,
+    }
+}
+
+/// The ring while it is clipped: its links, reflex vertices and marks.
+struct Walk<'a> {
+    s: &'a Scratch,
+    next: [u8; MAX],
+    prev: [u8; MAX],
+    /// Live nodes turning right or straight.
+    reflex: u64,
+    /// Tips that failed the ear test since a neighbour last changed (and reflex ones).
+    not_ear: u64,
+    len: usize,
+    /// The fan failed once: don't try again.
+    no_fan: bool,
+    out: &'a mut Vec<[u32; 3]>,
+}
+
+impl Walk<'_> {
+    fn next(&self, v: usize) -> usize {
+        usize::from(self.next[v])
+    }
+
+    fn prev(&self, v: usize) -> usize {
+        usize::from(self.prev[v])
+    }
+
+    fn p(&self, v: usize) -> Point {
+        self.s.p[v]
+    }
+
+    fn is(&self, mask: u64, v: usize) -> bool {
+        mask & bit(v) != 0
+    }
+
+    fn turns_left(&self, a: usize, b: usize, c: usize) -> bool {
+        orient2d(self.p(a), self.p(b), self.p(c)) == Orientation::CounterClockwise
+    }
+
+    /// Marks the reflex nodes, as the clipper classifies a ring (a reflex tip is marked
+    /// "not an ear" at once): from the turns the filter took (right turns, or left ones on
+    /// a reversed ring), and at the bridges' ends by their new turns. Returns where the
+    /// clipper starts; `None` where it would remove walls or repeats first.
+    fn classify(&mut self) -> Option<usize> {
+        let s = self.s;
+        let start = self.prev(usize::from(s.start[s.outer]));
+        let mut v = start;
+        for _ in 0..self.len {
+            let reflex = if self.is(s.fresh, v) {
+                let (pp, pn, px) = (self.p(self.prev(v)), self.p(v), self.p(self.next(v)));
+                if pn == px || pp == px {
+                    return None;
+                }
+                orient2d(pp, pn, px) != Orientation::CounterClockwise
+            } else {
+                self.is(s.left, v) == self.is(s.reversed, v)
+            };
+            if reflex {
+                self.reflex |= bit(v);
+            }
+            v = self.next(v);
+        }
+        self.not_ear = self.reflex;
+        Some(start)
+    }
+
+    /// The fast walk (`Clipper::fast` on a ring with no crossed edge): the node to finish
+    /// at, `Some(None)` when a fan finished, `None` when stuck or tidying.
+    fn fast(&mut self, start: usize) -> Option<Option<usize>> {
+        let (mut ear, mut stop, mut rescanned) = (start, start, false);
+        while self.len > 3 {
+            if self.reflex.count_ones() <= 1 && !self.no_fan && self.try_fan(ear) {
+                return Some(None);
+            }
+            if !self.is(self.not_ear, ear) {
+                if self.is_ear(ear) {
+                    let corner = self.cut(ear)?;
+                    // past the new corner, unless the node there is marked
+                    let after = self.next(corner);
+                    ear = if self.is(self.not_ear, after) {
+                        corner
+                    } else {
+                        after
+                    };
+                    (stop, rescanned) = (ear, false);
+                    continue;
+                }
+                self.not_ear |= bit(ear);
+            }
+            ear = self.next(ear);
+            while ear != stop && self.is(self.not_ear, ear) {
+                ear = self.next(ear);
+            }
+            if ear == stop {
+                if rescanned {
+                    return None;
+                }
+                // a lap without an ear: a cut elsewhere may have freed a marked tip
+                rescanned = true;
+                self.not_ear = 0;
+            }
+        }
+        Some(Some(ear))
+    }
+
+    /// The quality strategy (`Clipper::quality`): always the ear with the smallest angle
+    /// at its tip, from a queue of convex tips by angle rank, then node (one entry per
+    /// node, the smallest found by a scan). A tip is tested when it comes up. (The
+    /// clipper also skips tips whose neighbour was cut since they were queued; here both
+    /// neighbours of every cut are queued again, or turn reflex and fail the test, so
+    /// every entry is current.)
+    fn quality(&mut self, start: usize) -> Option<Option<usize>> {
+        // by node: its entry, `u64::MAX` for none
+        let mut queue = [u64::MAX; MAX];
+        let push = |w: &Self, v: usize, queue: &mut [u64; MAX]| {
+            if !w.is(w.reflex, v) {
+                let rank = approx_angle_rank(w.p(w.prev(v)), w.p(v), w.p(w.next(v)));
+                // as the clipper packs it: the rank's top bits above the node
+                queue[v] = (rank.to_bits() << 1) >> 32 << 32 | v as u64;
+            }
+        };
+        let seed = |w: &Self, from: usize, queue: &mut [u64; MAX]| {
+            let mut v = from;
+            for _ in 0..w.len {
+                push(w, v, queue);
+                v = w.next(v);
+            }
+        };
+        seed(self, start, &mut queue);
+        let (mut last, mut rescanned) = (start, false);
+        while self.len > 3 {
+            let (item, v) = (queue.iter().zip(0..).min()).map_or((u64::MAX, 0), |(&k, v)| (k, v));
+            if item == u64::MAX {
+                // none queued: once more over the whole ring, then the pipeline decides
+                if rescanned {
+                    return None;
+                }
+                rescanned = true;
+                seed(self, last, &mut queue);
+                continue;
+            }
+            queue[v] = u64::MAX;
+            if !self.is_ear(v) {
+                continue;
+            }
+            let a = self.prev(v);
+            last = self.cut(v)?;
+            rescanned = false;
+            for m in [a, last] {
+                push(self, m, &mut queue);
+            }
+        }
+        Some(Some(last))
+    }
+
+    /// The last triangle, when it has area; a clockwise one is strict mode's error.
+    fn finish(&mut self, last: usize, lenient: bool) -> bool {
+        let (a, c) = (self.prev(last), self.next(last));
+        match orient2d(self.p(a), self.p(last), self.p(c)) {
+            Orientation::CounterClockwise => self.emit(a, last, c),
+            Orientation::Clockwise if !lenient => return false,
+            _ => {}
+        }
+        true
+    }
+
+    /// Whether the tip `b` can be cut: it turns left and no reflex vertex spoils the
+    /// triangle (the clipper's test, `geom::interferes`).
+    fn is_ear(&self, b: usize) -> bool {
+        if self.is(self.reflex, b) {
+            return false;
+        }
+        let (a, c) = (self.prev(b), self.next(b));
+        let (pa, pb, pc) = (self.p(a), self.p(b), self.p(c));
+        let (lo, hi) = bounds(pa, pb, pc);
+        let mut candidates = self.reflex & !bit(a) & !bit(c);
+        while candidates != 0 {
+            let r = candidates.trailing_zeros() as usize;
+            candidates &= candidates - 1;
+            let q = self.p(r);
+            let around = || [self.p(self.prev(r)), self.p(self.next(r))];
+            if near(lo, hi, q) && interferes(q, around, pa, pb, pc) {
+                return false;
+            }
+        }
+        true
+    }
+
+    /// Cuts the ear at `b`; returns its successor. The neighbours' marks are cleared and
+    /// their turns taken again. `None`, having cut, where the clipper would tidy: a
+    /// neighbour repeats the position of the node beyond it, or the two share one.
+    fn cut(&mut self, b: usize) -> Option<usize> {
+        let (a, c) = (self.prev(b), self.next(b));
+        self.emit(a, b, c);
+        self.next[a] = c as u8;
+        self.prev[c] = a as u8;
+        self.len -= 1;
+        self.not_ear &= !(bit(a) | bit(c));
+        let (pp, pa, pc, pn) = (
+            self.p(self.prev(a)),
+            self.p(a),
+            self.p(c),
+            self.p(self.next(c)),
+        );
+        // (one ring's positions are all distinct: only bridges repeat some)
+        let repeats = self.s.rings > 1 && (pa == pc || pp == pc || pc == pn || pa == pn);
+        if repeats || self.len <= 2 {
+            return None;
+        }
+        let (ta, tc) = (orient2d(pp, pa, pc), orient2d(pa, pc, pn));
+        for (v, turn) in [(a, ta), (c, tc)] {
+            if turn == Orientation::CounterClockwise {
+                self.reflex &= !bit(v);
+            } else {
+                self.reflex |= bit(v);
+                self.not_ear |= bit(v);
+            }
+        }
+        Some(c)
+    }
+
+    /// With at most one reflex vertex left, the ring is star-shaped from it: fans out
+    /// from it (or from `any`), if every fan triangle turns left.
+    fn try_fan(&mut self, any: usize) -> bool {
+        let center = if self.reflex == 0 {
+            any
+        } else {
+            self.reflex.trailing_zeros() as usize
+        };
+        let mut v = self.next(center);
+        while self.next(v) != center {
+            if !self.turns_left(center, v, self.next(v)) {
+                self.no_fan = true;
+                return false;
+            }
+            v = self.next(v);
+        }
+        let mut v = self.next(center);
+        while self.next(v) != center {
+            let w = self.next(v);
+            self.emit(center, v, w);
+            v = w;
+        }
+        true
+    }
+
+    fn emit(&mut self, a: usize, b: usize, c: usize) {
+        let vertex = |v: usize| u32::from(self.s.vertex[v]);
+        self.out.push([vertex(a), vertex(b), vertex(c)]);
+    }
+}

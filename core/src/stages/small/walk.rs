@@ -154,7 +154,7 @@ impl Walk<'_> {
     /// neighbours of every cut are queued again, or turn reflex and fail the test, so
     /// every entry is current.)
     fn quality(&mut self, start: usize) -> Option<Option<usize>> {
-        // by node: its entry, `u64::MAX` for none
+        // by node: its entry, `u64::MAX` for none (only the nodes in use are read)
         let mut queue = [u64::MAX; MAX];
         let push = |w: &Self, v: usize, queue: &mut [u64; MAX]| {
             if !w.is(w.reflex, v) {
@@ -173,7 +173,8 @@ impl Walk<'_> {
         seed(self, start, &mut queue);
         let (mut last, mut rescanned) = (start, false);
         while self.len > 3 {
-            let (item, v) = (queue.iter().zip(0..).min()).map_or((u64::MAX, 0), |(&k, v)| (k, v));
+            let queued = &queue[..self.s.nodes];
+            let (item, v) = (queued.iter().zip(0..).min()).map_or((u64::MAX, 0), |(&k, v)| (k, v));
             if item == u64::MAX {
                 // none queued: once more over the whole ring, then the pipeline decides
                 if rescanned {

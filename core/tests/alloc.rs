@@ -198,7 +198,7 @@ fn inputs() -> Vec<(String, Flat, Nesting)> {
 
 #[test]
 fn warmed_up_triangulator_does_not_allocate() {
-    warmed_up_triangulate_many_allocates_only_its_results();
+    warmed_up_triangulate_many_allocates_its_results_and_one_job();
     let mut failures = Vec::new();
     let mut tri64 = Triangulator::<f64>::new();
     let mut tri32 = Triangulator::<f32>::new();
@@ -287,10 +287,11 @@ fn warmed_up_triangulator_does_not_allocate() {
     );
 }
 
-/// `triangulate_many`, warm: one thread allocates only the returned `Vec` of results; with
-/// a pool, its workers allocate only while their buffers grow to the inputs they meet. (Called from the test above: counting
-/// the pool's threads counts every thread, so nothing else may run meanwhile.)
-fn warmed_up_triangulate_many_allocates_only_its_results() {
+/// `triangulate_many`, warm: one thread allocates only the returned `Vec` of results; on
+/// two threads, also the job handed to the pool's thread, and the workers only while
+/// their buffers grow to the inputs they meet. (Called from the test above: counting the
+/// pool's threads counts every thread, so nothing else may run meanwhile.)
+fn warmed_up_triangulate_many_allocates_its_results_and_one_job() {
     let shapes: Vec<Rings> =
         serde_json::from_value(read_json("datasets/lorem_latin.json")).expect("shapes JSON");
     let flats: Vec<Flat> = shapes.iter().map(|rings| flatten(rings)).collect();
@@ -326,10 +327,13 @@ fn warmed_up_triangulate_many_allocates_only_its_results() {
         EVERY_THREAD.store(false, Ordering::Relaxed);
         assert!(ok);
         let n = EVERY_COUNT.load(Ordering::Relaxed);
-        // the results Vec; and rarely a worker that meets a larger input than on any call
-        // before grows a buffer once (work stealing decides who takes what)
+        eprintln!("ALLOC two threads {n}");
+        // the results Vec, and the job handed to the pool's thread (rayon boxes a
+        // spawned job; the caller works on its own worker meanwhile); and rarely a worker
+        // that meets a larger input than on any call before grows a buffer once (which
+        // thread takes which inputs varies)
         assert!(
-            n <= 1 + 2 * 2,
+            (2..=2 + 2 * 2).contains(&n),
             "two threads: {n} allocations for {} inputs",
             polygons.len()
         );

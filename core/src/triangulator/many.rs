@@ -4,9 +4,10 @@
 //! Each input is triangulated exactly as [`Triangulator::triangulate`] would, by a worker
 //! that reuses its buffers; which worker takes which input does not change the result,
 //! since a worker keeps buffers between calls, never decisions. With the `threads` feature
-//! and more than one thread, rayon's work stealing balances inputs of different sizes
-//! over a pool of that many threads, each with its own worker (allocated on first use and
-//! kept).
+//! and n > 1 threads, the caller's thread and n − 1 threads of a rayon pool take runs of
+//! a few inputs in turn until none is left, each thread with its own worker (allocated on
+//! first use and kept). The caller starts at once: a pool thread that wakes up late finds
+//! less to do, and one that finds nothing leaves (the call returns once it has).
 
 use super::lenient::Outcome;
 use super::{Triangulator, Worker};
@@ -14,11 +15,16 @@ use crate::geom::Coord;
 use crate::report::{Added, Dropped, Repair, Report};
 use crate::{Error, Options};
 
-/// Below this many vertices in all, the inputs run on the caller's thread: waking the
-/// pool's threads costs more than they would save (a page of 54 glyphs, 1,783 vertices,
-/// took 0.16 ms on two threads against 0.18 ms on one, in a loop; interleaved with other
-/// work, when the threads have gone to sleep, 0.5 ms).
-const PARALLEL_MIN_VERTICES: usize = 4096;
+/// Below this many vertices in all, the inputs run on the caller's thread: the call waits
+/// for the pool's threads to take up their share (they may find it done), and waking a
+/// sleeping thread costs more than a handful of glyphs (a page of 54 glyphs, 1,783
+/// vertices, 0.10–0.12 ms on two threads against 0.12–0.13 ms on one, interleaved with
+/// other work).
+const PARALLEL_MIN_VERTICES: usize = 1024;
+
+/// Inputs a thread takes at a time from a parallel `triangulate_many`.
+#[cfg(feature = "threads")]
+const RUN: usize = 4;
 
 /// One input's outcome, kept so that its [`Report`] can borrow from the triangulator.
 #[derive(Debug, Default)]
@@ -188,7 +194,7 @@ impl<T: Coord> Triangulator<T> {
         let done = threads > 1
             && polygons.len() > 1
             && work >= PARALLEL_MIN_VERTICES
-            && many.in_parallel(polygons, options, threads, out);
+            && many.in_parallel(&mut self.worker, polygons, options, threads, out);
         if !done {
             #[cfg(feature = "threads")]
             let (pool, sizes) = {
@@ -245,36 +251,59 @@ impl Many {
     #[cfg(feature = "threads")]
     fn in_parallel<T: Coord>(
         &mut self,
+        caller: &mut Worker,
         polygons: &[(&[[T; 2]], &[usize])],
         options: &Options,
         threads: usize,
         out: &mut [Vec<[u32; 3]>],
     ) -> bool {
-        use rayon::prelude::*;
         let sizes = self.mark_and_cut();
         let Some(pool) = started(&mut self.pool, threads) else {
             return false;
         };
+        // The inputs in runs of a few, handed out in order to whichever thread asks next:
+        // the caller's and `threads - 1` of the pool's. The caller starts at once and
+        // never waits for a pool thread to wake up (on a machine whose idle cores sleep
+        // deeply, that takes longer than a page of glyphs): a thread that comes late
+        // finds the runs taken and leaves.
         let outcomes = &mut self.outcomes[..polygons.len()];
-        pool.threads.install(|| {
-            let jobs = polygons
-                .par_iter()
-                .zip(out.par_iter_mut())
-                .zip(outcomes.par_iter_mut());
-            jobs.for_each(|((&(vertices, ring_starts), out), outcome)| {
-                // every job runs on a thread of this pool, which has a worker per thread
-                let k = rayon::current_thread_index().unwrap_or(0) % pool.workers.len();
-                // (a worker is only ever locked by its own thread: never contended, and
-                // never poisoned, as the pipeline does not panic)
-                let mut worker = match pool.workers[k].lock() {
-                    Ok(worker) => worker,
-                    Err(poisoned) => poisoned.into_inner(),
-                };
-                // a large input clips on the same threads, as it would alone
-                lend(&mut worker, Some(&pool.threads), vertices.len(), sizes);
-                let result = worker.run(vertices, ring_starts, options, out);
-                outcome.record(&worker, result, out.len());
-            });
+        let runs = polygons
+            .chunks(RUN)
+            .zip(out.chunks_mut(RUN))
+            .zip(outcomes.chunks_mut(RUN));
+        let runs = std::sync::Mutex::new(runs);
+        let take = || match runs.lock() {
+            Ok(mut runs) => runs.next(),
+            Err(poisoned) => poisoned.into_inner().next(),
+        };
+        let work = |worker: &mut Worker| {
+            while let Some(((polygons, out), outcomes)) = take() {
+                let jobs = polygons.iter().zip(out).zip(outcomes);
+                for ((&(vertices, ring_starts), out), outcome) in jobs {
+                    // a large input clips on the pool's threads, as it would alone
+                    lend(worker, Some(&pool.threads), vertices.len(), sizes);
+                    let result = worker.run(vertices, ring_starts, options, out);
+                    outcome.record(worker, result, out.len());
+                }
+            }
+        };
+        pool.threads.in_place_scope(|scope| {
+            for _ in 1..threads {
+                scope.spawn(|_| {
+                    // a pool thread, which has a worker of its own; only this thread
+                    // locks it, so it is busy only when this thread is already working
+                    // with it further up its stack (waiting in mark-and-cut's rounds, it
+                    // may take this job): then it leaves the runs to the others
+                    let k = rayon::current_thread_index().unwrap_or(0) % pool.workers.len();
+                    let mut worker = match pool.workers[k].try_lock() {
+                        Ok(worker) => worker,
+                        Err(std::sync::TryLockError::Poisoned(p)) => p.into_inner(),
+                        Err(std::sync::TryLockError::WouldBlock) => return,
+                    };
+                    work(&mut worker);
+                });
+            }
+            work(caller);
         });
         true
     }
@@ -319,6 +348,7 @@ impl Many {
     #[cfg(not(feature = "threads"))]
     fn in_parallel<T: Coord>(
         &mut self,
+        _caller: &mut Worker,
         _polygons: &[(&[[T; 2]], &[usize])],
         _options: &Options,
         _threads: usize,

@@ -1,6 +1,6 @@
 //! How a call runs the pipeline — and lenient mode's reruns on crossing input.
 //!
-//! One small polygon (up to 64 vertices, a few holes) goes to the `small` stage alone,
+//! One small polygon (up to 128 nodes, a few holes) goes to the `small` stage alone,
 //! which gives the pipeline's result or hands the input back. Otherwise strict mode, and
 //! lenient mode on input whose edges do not cross, run the pipeline once ([`run`]); in
 //! lenient mode, a second time with every ring whole when cutting rings into their lobes
@@ -29,7 +29,7 @@ use crate::crossings::{proof, sweep};
 use crate::geom::{approx_cross, approx_double_area, Coord, Point};
 use crate::report::{Dropped, Repair};
 use crate::stages::bridge::{self, Careful};
-use crate::stages::{clip, small};
+use crate::stages::clip;
 use crate::structures::{Node, NodeId, Pool};
 use crate::{Error, Options, Strategy};
 
@@ -123,14 +123,15 @@ pub(crate) fn triangulate<T: Coord>(
         )
     {
         // valid input: a lenient run is measured all the same, as the pipeline's is
+        let (holes, area) = st.small.holes_and_area();
         let deviation = if options.lenient {
-            deviation(small::double_area(&st.small), vertices, out)
+            deviation(area, vertices, out)
         } else {
             0.0
         };
         return Ok(Outcome {
             polygons: 1,
-            holes: small::hole_count(&st.small),
+            holes,
             deviation,
         });
     }

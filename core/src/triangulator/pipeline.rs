@@ -26,10 +26,41 @@ pub(crate) struct Stages {
     pub touch: touch::Scratch,
     pub bridge: bridge::Scratch,
     pub clip: clip::Scratch,
-    pub small: small::Scratch,
+    pub small: Small,
 }
 
-/// The small stage in place of the pipeline, for one small polygon (see [`small::fits`]):
+/// The small stage's two scratches, and what it did last.
+#[derive(Debug, Default)]
+pub(crate) struct Small {
+    narrow: small::Narrow,
+    wide: small::Wide,
+    /// The last call used the wide scratch.
+    used_wide: bool,
+    /// Declines every input, for tests holding the stage to the pipeline.
+    pub off: bool,
+    /// The last call was the stage's (for tests: that it takes what it should).
+    pub took: bool,
+}
+
+impl Small {
+    /// The number of holes and twice the area (as lenient mode measures it) of the polygon
+    /// the stage took last.
+    pub(crate) fn holes_and_area(&self) -> (usize, f64) {
+        if self.used_wide {
+            (
+                small::hole_count(&self.wide),
+                small::double_area(&self.wide),
+            )
+        } else {
+            (
+                small::hole_count(&self.narrow),
+                small::double_area(&self.narrow),
+            )
+        }
+    }
+}
+
+/// The small stage in place of the pipeline, for one small polygon (see [`small::nodes`]):
 /// whether it proved the input valid and triangulated it into `out` (with the triangles
 /// of the fast strategy, or with `quality` the quality one's). When not, the pipeline
 /// must run from the start.
@@ -52,12 +83,17 @@ pub(crate) fn small_ring<T: Coord>(
     let rounds = false;
     st.small.took = !rounds
         && small_ring_valid(cx, st, vertices, ring_starts, nesting)
-        && small::clip(&mut st.small, quality, lenient, out);
+        && if st.small.used_wide {
+            small::clip(&mut st.small.wide, quality, lenient, out)
+        } else {
+            small::clip(&mut st.small.narrow, quality, lenient, out)
+        };
     st.small.took
 }
 
-/// Strict mode's input check by the small stage: `true` when it proved the input valid;
-/// when not, [`check_input`] must decide.
+/// Strict mode's input check by the small stage (its narrow scratch for up to 64 nodes,
+/// the wide one for more): `true` when it proved the input valid; when not,
+/// [`check_input`] must decide.
 pub(crate) fn small_ring_valid<T: Coord>(
     cx: &mut Context,
     st: &mut Stages,
@@ -65,9 +101,20 @@ pub(crate) fn small_ring_valid<T: Coord>(
     ring_starts: &[usize],
     nesting: Nesting,
 ) -> bool {
-    st.small.took = small::fits(&st.small, vertices.len(), ring_starts)
-        && small::check(cx, &mut st.small, vertices, ring_starts, nesting);
-    st.small.took
+    let sm = &mut st.small;
+    let nodes = small::nodes(vertices.len(), ring_starts).filter(|_| !sm.off);
+    sm.took = match nodes {
+        None => false,
+        Some(n) => {
+            sm.used_wide = n > 64;
+            if sm.used_wide {
+                small::check(cx, &mut sm.wide, vertices, ring_starts, nesting)
+            } else {
+                small::check(cx, &mut sm.narrow, vertices, ring_starts, nesting)
+            }
+        }
+    };
+    sm.took
 }
 
 /// Loads and checks the input: `load`, `clean` (and in lenient mode on input without

@@ -6,7 +6,7 @@
 
 use core::cmp::Ordering;
 
-use super::{bit, reverse, Scratch, RINGS};
+use super::{bit, reverse, Mask, Scratch, RINGS};
 use crate::geom::{
     compare_hits, corner_contains, left_of, orient2d, LeastAngle, Orientation, Point,
 };
@@ -17,7 +17,7 @@ use crate::Nesting;
 /// otherwise, or when `FirstIsOuter` names another ring the boundary (the pipeline then
 /// reports or repairs it). The rings meet nowhere, so one vertex of a ring decides for
 /// all of it, and it lies on no other ring: crossing parity is exact.
-pub(super) fn nest(s: &mut Scratch, nesting: Nesting) -> bool {
+pub(super) fn nest<const N: usize, M: Mask>(s: &mut Scratch<N, M>, nesting: Nesting) -> bool {
     let mut outer = None;
     for b in 0..s.rings {
         let q = s.p[usize::from(s.start[b])];
@@ -45,7 +45,7 @@ pub(super) fn nest(s: &mut Scratch, nesting: Nesting) -> bool {
 
 /// Whether `q`, on no edge of ring `r`, lies inside it: the ray from `q` towards +x
 /// crosses it an odd number of times (half-open in y: a vertex on the ray counts once).
-fn inside(s: &Scratch, r: usize, q: Point) -> bool {
+fn inside<const N: usize, M: Mask>(s: &Scratch<N, M>, r: usize, q: Point) -> bool {
     let mut odd = false;
     for v in s.ring(r) {
         let (a, b) = (s.p[v], s.p[s.next(v)]);
@@ -63,14 +63,14 @@ fn inside(s: &Scratch, r: usize, q: Point) -> bool {
 /// rightmost vertex M to the node `bridge` connects it to. The bridge's two new nodes
 /// follow the others, the copy of the target first, as the pool numbers them. `false`
 /// where the pipeline would choose by a fallback.
-pub(super) fn bridge(s: &mut Scratch) -> bool {
+pub(super) fn bridge<const N: usize, M: Mask>(s: &mut Scratch<N, M>) -> bool {
     let mut order = [0u8; RINGS];
     let mut holes = 0;
     for r in (0..s.rings).filter(|&r| r != s.outer) {
         order[holes] = r as u8;
         holes += 1;
     }
-    let key = |s: &Scratch, r: u8| s.p[usize::from(s.rightmost[usize::from(r)])];
+    let key = |s: &Scratch<N, M>, r: u8| s.p[usize::from(s.rightmost[usize::from(r)])];
     let order = &mut order[..holes];
     // (an insertion sort: a handful of holes)
     for i in 1..order.len() {
@@ -111,15 +111,15 @@ pub(super) fn bridge(s: &mut Scratch) -> bool {
         (s.prev[m2], s.next[m2]) = (mp as u8, x2 as u8);
         (s.prev[x2], s.next[x2]) = (m2 as u8, xn as u8);
         s.prev[xn] = x2 as u8;
-        merged |= hole_nodes | bit(x2) | bit(m2);
-        s.fresh |= bit(x) | bit(m) | bit(x2) | bit(m2);
+        merged |= hole_nodes | bit::<M>(x2) | bit(m2);
+        s.fresh |= bit::<M>(x) | bit(m) | bit(x2) | bit(m2);
     }
     true
 }
 
 /// The live nodes of ring `r` (before it is bridged).
-fn ring_mask(s: &Scratch, r: usize) -> u64 {
-    s.ring(r).fold(0, |mask, v| mask | bit(v))
+fn ring_mask<const N: usize, M: Mask>(s: &Scratch<N, M>, r: usize) -> M {
+    s.ring(r).fold(M::NONE, |mask, v| mask | bit(v))
 }
 
 /// The merged node hole vertex `m` connects to (`bridge::find_hole_bridge`): the ray from
@@ -127,7 +127,7 @@ fn ring_mask(s: &Scratch, r: usize) -> u64 {
 /// one, else the edge's endpoint P with larger x or the vertex in triangle M, I, P at the
 /// least angle to the ray; there, the node whose corner holds the direction to M. `None`
 /// when the ray hits nothing, or no node's corner holds M strictly, or more than one does.
-fn target(s: &Scratch, merged: u64, m: usize) -> Option<usize> {
+fn target<const N: usize, M: Mask>(s: &Scratch<N, M>, merged: M, m: usize) -> Option<usize> {
     let pm = s.p[m];
     let mut best: Option<(Point, Point)> = None;
     for a in nodes(merged) {
@@ -173,11 +173,11 @@ fn target(s: &Scratch, merged: u64, m: usize) -> Option<usize> {
 }
 
 /// The nodes of a mask, lowest first.
-fn nodes(mut mask: u64) -> impl Iterator<Item = usize> {
+fn nodes<M: Mask>(mut mask: M) -> impl Iterator<Item = usize> {
     core::iter::from_fn(move || {
-        (mask != 0).then(|| {
-            let v = mask.trailing_zeros() as usize;
-            mask &= mask - 1;
+        (mask != M::NONE).then(|| {
+            let v = mask.lowest();
+            mask = mask.without_lowest();
             v
         })
     })

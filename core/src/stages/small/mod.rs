@@ -1,7 +1,8 @@
 //! Stage *small*, in place of all the others for one small polygon: an outer ring and
-//! up to [`RINGS`]` - 1` holes directly inside it, of at most [`MAX`] vertices with the
-//! bridges' copies (a county, a building, most glyphs) in one pass over a few compact
-//! arrays.
+//! up to [`RINGS`]` - 1` holes directly inside it, of at most [`MAX`] nodes with the
+//! bridges' copies (a county, a building, nearly every glyph) in one pass over a few
+//! compact arrays: up to 64 nodes on `u64` masks ([`Narrow`]), up to 128 on `u128`
+//! ([`Wide`]), the same code for both.
 //!
 //! The pipeline's stages are built for any number of rings of any size; on a polygon of
 //! a dozen vertices their set-up costs more than their work. This stage does what they do
@@ -11,7 +12,8 @@
 //! 1. **Load** the vertices, widened to `f64` (exact), each ring linked by one-byte indices.
 //! 2. **Filter** repeated and straight vertices exactly as `clean` does, in its order.
 //! 3. **Prove** that no two edges meet, other than neighbours at their shared vertex:
-//!    every pair whose boxes overlap is decided by exact signs.
+//!    every pair whose boxes overlap is decided by exact signs (a lone ring star-shaped
+//!    from its vertices' mean first passes an O(n) certificate).
 //! 4. **Orient** every ring counter-clockwise by the turn at its rightmost-lowest vertex.
 //! 5. **Nest** (`holes`): one ring must contain all the others, and none of those another
 //!    (by exact crossing parity); the holes are turned clockwise.
@@ -20,9 +22,9 @@
 //!    copies.
 //! 7. **Clip** with the strategy's walk (`walk`): the fast one with the same start, the
 //!    same "not an ear" marks, the same order of ears and the same fan at the end; the
-//!    quality one with the same queue order (smallest angle rank, then node). Reflex,
-//!    marked and removed nodes are 64-bit masks; where a bridge's ends come together, the
-//!    walk tidies repeated positions and walls as the clipper does.
+//!    quality one with the same queue order (smallest angle rank, then node). Reflex and
+//!    marked nodes are bit masks. A cut that would need the clipper's tidying (where a
+//!    bridge's ends come together) hands the polygon back.
 //!
 //! Whatever the pipeline would treat specially makes the stage give up (`false`) before
 //! writing anything the pipeline would not: non-finite coordinates, a spike or a ring
@@ -45,8 +47,72 @@ mod walk;
 pub(crate) use walk::clip_ring;
 
 /// The most nodes the stage holds: the input's vertices (a closing point included) and
-/// two copies per hole. Its node masks fit one `u64`, its links one byte each.
-pub(crate) const MAX: usize = 64;
+/// two copies per hole, in its wide form; its node masks fit one `u128`, its links one
+/// byte each. The narrow form ([`Narrow`]) holds up to 64, on `u64` masks, which most
+/// polygons fit and which runs faster.
+pub(crate) const MAX: usize = 128;
+
+/// The narrow form of the stage's scratch: up to 64 nodes.
+pub(crate) type Narrow = Scratch<64, u64>;
+
+/// The wide form: up to [`MAX`] nodes.
+pub(crate) type Wide = Scratch<MAX, u128>;
+
+/// A set of nodes, one bit each: `u64` for up to 64 nodes, `u128` for up to 128.
+pub(crate) trait Mask:
+    Copy
+    + Eq
+    + core::fmt::Debug
+    + core::ops::BitOr<Output = Self>
+    + core::ops::BitAnd<Output = Self>
+    + core::ops::Not<Output = Self>
+    + core::ops::BitOrAssign
+    + core::ops::BitAndAssign
+    + core::ops::BitXorAssign
+{
+    /// The empty set.
+    const NONE: Self;
+    /// The set of node `v` alone.
+    fn bit(v: usize) -> Self;
+    /// The lowest node of a set that is not empty.
+    fn lowest(self) -> usize;
+    /// A set that is not empty without its lowest node.
+    fn without_lowest(self) -> Self;
+    /// The number of nodes in the set.
+    fn count(self) -> u32;
+    /// The set with node `v` in it or not, as `on` says (without a branch).
+    fn with(self, v: usize, on: bool) -> Self;
+}
+
+macro_rules! mask {
+    ($t:ty) => {
+        impl Mask for $t {
+            const NONE: Self = 0;
+            #[inline(always)]
+            fn bit(v: usize) -> Self {
+                1 << v
+            }
+            #[inline(always)]
+            fn lowest(self) -> usize {
+                self.trailing_zeros() as usize
+            }
+            #[inline(always)]
+            fn without_lowest(self) -> Self {
+                self & (self - 1)
+            }
+            #[inline(always)]
+            fn count(self) -> u32 {
+                self.count_ones()
+            }
+            #[inline(always)]
+            fn with(self, v: usize, on: bool) -> Self {
+                (self & !(1 << v)) | (<$t>::from(on) << v)
+            }
+        }
+    };
+}
+mask!(u64);
+mask!(u128);
 
 /// The most rings: the outer one and its holes.
 pub(crate) const RINGS: usize = 8;
@@ -54,12 +120,12 @@ pub(crate) const RINGS: usize = 8;
 /// The stage's arrays, by node index: the input's vertices first (node i is vertex i),
 /// then the copies the bridges make.
 #[derive(Debug)]
-pub(crate) struct Scratch {
-    p: [Point; MAX],
-    next: [u8; MAX],
-    prev: [u8; MAX],
+pub(crate) struct Scratch<const N: usize, M> {
+    p: [Point; N],
+    next: [u8; N],
+    prev: [u8; N],
     /// The input vertex of each node (a copy repeats its original's).
-    vertex: [u8; MAX],
+    vertex: [u8; N],
     /// The nodes in use: the vertices, then the bridges' copies.
     nodes: usize,
     /// The rings: how many, where each starts in the input (and the end), a live node
@@ -73,32 +139,28 @@ pub(crate) struct Scratch {
     outer: usize,
     /// The edges' boxes for the proof, ring after ring, each in ring order from its start:
     /// x0, x1, y0, y1.
-    boxes: [[f64; 4]; MAX],
+    boxes: [[f64; 4]; N],
     /// The start node of each of those edges.
-    from: [u8; MAX],
+    from: [u8; N],
     /// The nodes turning left (counter-clockwise) on their filtered ring, as it ran before
     /// `orient`; every other live node turns right (none is straight).
-    left: u64,
+    left: M,
     /// The nodes whose ring runs against its input order now (turned by `orient`, or as a
     /// hole), so that they turn the other way.
-    reversed: u64,
+    reversed: M,
     /// The nodes whose turn the bridges changed (their ends and the ends' copies).
-    fresh: u64,
+    fresh: M,
     /// Twice the polygon's area as lenient mode sums it (see [`double_area`]).
     area: f64,
-    /// Declines every input, for tests holding the stage to the pipeline.
-    pub off: bool,
-    /// The last call was the stage's (for tests: that it takes what it should).
-    pub took: bool,
 }
 
-impl Default for Scratch {
+impl<const N: usize, M: Mask> Default for Scratch<N, M> {
     fn default() -> Self {
         Scratch {
-            p: [Point::new(0.0, 0.0); MAX],
-            next: [0; MAX],
-            prev: [0; MAX],
-            vertex: [0; MAX],
+            p: [Point::new(0.0, 0.0); N],
+            next: [0; N],
+            prev: [0; N],
+            vertex: [0; N],
             nodes: 0,
             rings: 0,
             first: [0; RINGS + 1],
@@ -106,19 +168,17 @@ impl Default for Scratch {
             len: [0; RINGS],
             rightmost: [0; RINGS],
             outer: 0,
-            boxes: [[0.0; 4]; MAX],
-            from: [0; MAX],
-            left: 0,
-            reversed: 0,
-            fresh: 0,
+            boxes: [[0.0; 4]; N],
+            from: [0; N],
+            left: M::NONE,
+            reversed: M::NONE,
+            fresh: M::NONE,
             area: 0.0,
-            off: false,
-            took: false,
         }
     }
 }
 
-impl Scratch {
+impl<const N: usize, M: Mask> Scratch<N, M> {
     fn next(&self, v: usize) -> usize {
         usize::from(self.next[v])
     }
@@ -145,33 +205,34 @@ impl Scratch {
     }
 }
 
-const fn bit(v: usize) -> u64 {
-    1 << v
+/// The set of node `v` alone.
+fn bit<M: Mask>(v: usize) -> M {
+    M::bit(v)
 }
 
-/// Whether the stage can take this input: one ring of 3 to [`MAX`] vertices, or up to
-/// [`RINGS`] rings of at least three vertices each whose vertices and two copies per hole
-/// fit [`MAX`] nodes.
-pub(crate) fn fits(s: &Scratch, vertices: usize, ring_starts: &[usize]) -> bool {
-    if s.off || ring_starts.first() != Some(&0) || ring_starts.len() > RINGS {
-        return false;
+/// The nodes the stage needs for this input (its vertices and two copies per hole) when
+/// it may take it: one ring of 3 to [`MAX`] vertices, or up to [`RINGS`] rings of at
+/// least three vertices each whose nodes number at most [`MAX`]. A scratch of `N` nodes
+/// takes an input of up to `N`.
+pub(crate) fn nodes(vertices: usize, ring_starts: &[usize]) -> Option<usize> {
+    if ring_starts.first() != Some(&0) || ring_starts.len() > RINGS {
+        return None;
     }
     let rings = ring_starts.len();
-    if rings == 1 {
-        return (3..=MAX).contains(&vertices);
-    }
-    vertices + 2 * (rings - 1) <= MAX
-        && (ring_starts.windows(2).all(|w| w[1] >= w[0] + 3))
-        && ring_starts[rings - 1] + 3 <= vertices
+    let nodes = vertices + 2 * (rings - 1);
+    let proper = rings == 1
+        || (ring_starts.windows(2).all(|w| w[1] >= w[0] + 3)
+            && ring_starts[rings - 1] + 3 <= vertices);
+    (proper && (3..=MAX).contains(&nodes)).then_some(nodes)
 }
 
 /// Steps 1–5: loads, filters, proves, orients and nests the rings (strict mode's input
 /// check). Records the dropped vertices in `cx.dropped` (cleared first). `false` when the
 /// input needs the pipeline; then `cx` holds nothing the pipeline reads (it resets it).
 /// The caller has asked [`fits`].
-pub(crate) fn check<T: Coord>(
+pub(crate) fn check<T: Coord, const N: usize, M: Mask>(
     cx: &mut Context,
-    s: &mut Scratch,
+    s: &mut Scratch<N, M>,
     vertices: &[[T; 2]],
     ring_starts: &[usize],
     nesting: Nesting,
@@ -186,14 +247,14 @@ pub(crate) fn check<T: Coord>(
             return false;
         }
         s.p[i] = p;
-        // (n ≤ 64: every index fits a byte)
+        // (n ≤ N ≤ 128: every index fits a byte)
         s.next[i] = (i + 1) as u8;
         s.prev[i] = i.wrapping_sub(1) as u8;
         s.vertex[i] = i as u8;
     }
     s.rings = ring_starts.len();
     s.nodes = n;
-    (s.left, s.reversed, s.fresh) = (0, 0, 0);
+    (s.left, s.reversed, s.fresh) = (M::NONE, M::NONE, M::NONE);
     for r in 0..s.rings {
         let (f, e) = (ring_starts[r], ring_starts.get(r + 1).copied().unwrap_or(n));
         (s.first[r], s.first[r + 1]) = (f as u8, e as u8);
@@ -220,12 +281,12 @@ pub(crate) fn check<T: Coord>(
 /// Step 2 for ring `r`, `clean`'s filter (`filter_ring`) move for move: the same vertices
 /// dropped, in the same order, and the same start. `false` on a spike, or when fewer than
 /// three vertices are left.
-fn filter(cx: &mut Context, s: &mut Scratch, r: usize) -> bool {
+fn filter<const N: usize, M: Mask>(cx: &mut Context, s: &mut Scratch<N, M>, r: usize) -> bool {
     let mut len = usize::from(s.first[r + 1] - s.first[r]);
     let mut v = usize::from(s.first[r]);
     // the last vertex known good; a full lap without a drop ends the loop
     let mut stop = s.prev(v);
-    let drop = |cx: &mut Context, s: &mut Scratch, v: usize, reason: DropReason| {
+    let drop = |cx: &mut Context, s: &mut Scratch<N, M>, v: usize, reason: DropReason| {
         s.unlink(v);
         cx.dropped.push(Dropped {
             vertex: v as u32,
@@ -247,7 +308,7 @@ fn filter(cx: &mut Context, s: &mut Scratch, r: usize) -> bool {
         } else if let Some(left) = left_turn(orient2d(pp, pn, px)) {
             // the last turn taken at each vertex is its turn on the filtered ring: once
             // nothing is dropped any more, the walk goes round once more
-            s.left = (s.left & !bit(v)) | (u64::from(left) << v);
+            s.left = s.left.with(v, left);
             if v == stop {
                 break;
             }
@@ -288,7 +349,7 @@ fn left_turn(o: Orientation) -> Option<bool> {
 /// of the kernel; the signs decide.) Counting the winding is exact too: with every edge
 /// going counter-clockwise round c, exactly the edges from below (or on) c's horizontal
 /// line to above it cross that line right of c.
-fn star_shaped(s: &Scratch) -> bool {
+fn star_shaped<const N: usize, M: Mask>(s: &Scratch<N, M>) -> bool {
     let len = usize::from(s.len[0]);
     let (mut sx, mut sy) = (0.0, 0.0);
     for v in s.ring(0) {
@@ -320,56 +381,83 @@ fn star_shaped(s: &Scratch) -> bool {
 
 /// Step 3: whether no two edges of the filtered rings meet, other than neighbours on one
 /// ring at their shared vertex (which, with no straight turn left, is all neighbours have
-/// in common). Then no two vertices share a position either.
-fn apart(s: &mut Scratch) -> bool {
-    // the rings' edges one after the other; `ends[r]` is where ring r's end
-    let mut ends = [0; RINGS];
+/// in common). Then no two vertices share a position either. Every pair of edges whose
+/// boxes overlap is decided by exact signs: up to [`PAIRS_MAX`] edges, found by comparing
+/// every pair of boxes; more, by sorting the boxes by their left sides and comparing each
+/// with those that start before it ends.
+fn apart<const N: usize, M: Mask>(s: &mut Scratch<N, M>) -> bool {
+    // the rings' edges one after the other, each with its neighbours on its ring
+    let mut around = [[0u8; 2]; N];
     let mut k = 0;
-    for (r, end) in ends.iter_mut().enumerate().take(s.rings) {
+    for r in 0..s.rings {
+        let (first, len) = (k, usize::from(s.len[r]));
         let mut v = usize::from(s.start[r]);
-        for _ in 0..s.len[r] {
+        for i in 0..len {
             let (a, b) = (s.p[v], s.p[s.next(v)]);
             s.boxes[k] = [a.x.min(b.x), a.x.max(b.x), a.y.min(b.y), a.y.max(b.y)];
             s.from[k] = v as u8;
+            let before = if i == 0 { len - 1 } else { i - 1 };
+            let after = if i + 1 == len { 0 } else { i + 1 };
+            around[k] = [(first + before) as u8, (first + after) as u8];
             v = s.next(v);
             k += 1;
         }
-        *end = k;
     }
-    let total = k;
-    let mut ring_start = 0;
-    for &end in ends.iter().take(s.rings) {
-        for k in ring_start..end {
+    let edges = k;
+    let meet = |s: &Scratch<N, M>, k: usize, m: usize| {
+        let (e, f) = (usize::from(s.from[k]), usize::from(s.from[m]));
+        let (a, b) = (s.p[e], s.p[s.next(e)]);
+        let (c, d) = (s.p[f], s.p[s.next(f)]);
+        boxed_segments_meet(a, b, c, d)
+    };
+    if edges <= PAIRS_MAX {
+        for (k, around) in around.iter().enumerate().take(edges) {
             let [x0, x1, y0, y1] = s.boxes[k];
-            // not the next edge of the ring, nor (for its first) its last: neighbours
-            let (from, skip) = if k == ring_start {
-                (k + 2, end - 1)
-            } else if k + 1 == end {
-                (k + 1, usize::MAX)
-            } else {
-                (k + 2, usize::MAX)
-            };
-            for m in from..total {
+            let [before, after] = around.map(usize::from);
+            for m in k + 1..edges {
                 let [u0, u1, w0, w1] = s.boxes[m];
-                if u0 <= x1 && x0 <= u1 && w0 <= y1 && y0 <= w1 && m != skip {
-                    let (e, f) = (usize::from(s.from[k]), usize::from(s.from[m]));
-                    let (a, b) = (s.p[e], s.p[s.next(e)]);
-                    let (c, d) = (s.p[f], s.p[s.next(f)]);
-                    if boxed_segments_meet(a, b, c, d) {
-                        return false;
-                    }
+                let overlap = u0 <= x1 && x0 <= u1 && w0 <= y1 && y0 <= w1;
+                if overlap && m != after && m != before && meet(s, k, m) {
+                    return false;
                 }
             }
         }
-        ring_start = end;
+        return true;
+    }
+    let mut order = [0u8; N];
+    for (k, o) in order.iter_mut().enumerate().take(edges) {
+        *o = k as u8;
+    }
+    let order = &mut order[..edges];
+    let boxes = &s.boxes;
+    order.sort_unstable_by(|&a, &b| boxes[usize::from(a)][0].total_cmp(&boxes[usize::from(b)][0]));
+    for (i, &k) in order.iter().enumerate() {
+        let k = usize::from(k);
+        let [_, x1, y0, y1] = s.boxes[k];
+        let [before, after] = around[k].map(usize::from);
+        for &m in &order[i + 1..] {
+            let m = usize::from(m);
+            let [u0, _, w0, w1] = s.boxes[m];
+            if u0 > x1 {
+                break;
+            }
+            let overlap = w0 <= y1 && y0 <= w1;
+            if overlap && m != after && m != before && meet(s, k, m) {
+                return false;
+            }
+        }
     }
     true
 }
 
+/// Up to this many edges, [`apart`] compares every pair of boxes; more, it sorts them
+/// first (measured: even at 33–64 edges, faster beyond).
+const PAIRS_MAX: usize = 48;
+
 /// Step 4 for ring `r`, as `clean` orients a ring: the turn at the rightmost-lowest vertex
 /// (there is one: no two vertices share a position) says whether the ring runs
 /// clockwise; then every link is reversed.
-fn orient(s: &mut Scratch, r: usize) {
+fn orient<const N: usize, M: Mask>(s: &mut Scratch<N, M>, r: usize) {
     let start = usize::from(s.start[r]);
     let mut best = start;
     for v in s.ring(r) {
@@ -380,13 +468,13 @@ fn orient(s: &mut Scratch, r: usize) {
     }
     s.rightmost[r] = best as u8;
     // (its turn, as the filter took it)
-    if s.left & bit(best) == 0 {
+    if s.left & bit(best) == M::NONE {
         reverse(s, r);
     }
 }
 
 /// Reverses ring `r`'s links.
-fn reverse(s: &mut Scratch, r: usize) {
+fn reverse<const N: usize, M: Mask>(s: &mut Scratch<N, M>, r: usize) {
     let mut v = usize::from(s.start[r]);
     for _ in 0..s.len[r] {
         let next = s.next(v);
@@ -397,14 +485,14 @@ fn reverse(s: &mut Scratch, r: usize) {
 }
 
 /// The number of holes of the polygon checked last.
-pub(crate) fn hole_count(s: &Scratch) -> usize {
+pub(crate) fn hole_count<const N: usize, M: Mask>(s: &Scratch<N, M>) -> usize {
     s.rings - 1
 }
 
 /// Twice the polygon's area as lenient mode sums it (outer ring minus holes, each by the
 /// shoelace formula from the ring's start, in floating point, in ring order): what the
 /// deviation is measured against. Set by [`clip`].
-pub(crate) fn double_area(s: &Scratch) -> f64 {
+pub(crate) fn double_area<const N: usize, M: Mask>(s: &Scratch<N, M>) -> f64 {
     s.area
 }
 
@@ -412,7 +500,12 @@ pub(crate) fn double_area(s: &Scratch) -> f64 {
 /// first) with the strategy's walk, the fast one or the quality one. `false` when a
 /// bridge or the walk needs the pipeline, or the last triangle turns clockwise (in strict
 /// mode): its repairs or errors decide then.
-pub(crate) fn clip(s: &mut Scratch, quality: bool, lenient: bool, out: &mut Vec<[u32; 3]>) -> bool {
+pub(crate) fn clip<const N: usize, M: Mask>(
+    s: &mut Scratch<N, M>,
+    quality: bool,
+    lenient: bool,
+    out: &mut Vec<[u32; 3]>,
+) -> bool {
     if lenient {
         s.area = 0.0;
         for r in 0..s.rings {

@@ -5,15 +5,15 @@
 //! needs the clipper's tidying, and hands the polygon back instead (the fixtures, glyphs
 //! and generated polygons of `core/tests/small.rs` never get there).
 
-use super::{bit, Scratch, MAX};
+use super::{bit, Mask, Scratch};
 use crate::geom::{approx_angle_rank, bounds, interferes, near, orient2d, Orientation, Point};
 
 /// Clips the checked (and bridged) polygon into `out` (cleared first) with the strategy's
 /// walk. `false` when the walk gets stuck or needs tidying, the bridges left a wall to
 /// remove first, or the last triangle turns clockwise (in strict mode): the pipeline's
 /// tidying, repairs or errors decide then.
-pub(crate) fn clip_ring(
-    s: &Scratch,
+pub(crate) fn clip_ring<const N: usize, M: Mask>(
+    s: &Scratch<N, M>,
     quality: bool,
     lenient: bool,
     out: &mut Vec<[u32; 3]>,
@@ -24,8 +24,8 @@ pub(crate) fn clip_ring(
         s,
         next: s.next,
         prev: s.prev,
-        reflex: 0,
-        not_ear: 0,
+        reflex: M::NONE,
+        not_ear: M::NONE,
         len,
         no_fan: false,
         out,
@@ -46,21 +46,21 @@ pub(crate) fn clip_ring(
 }
 
 /// The ring while it is clipped: its links, reflex vertices and marks.
-struct Walk<'a> {
-    s: &'a Scratch,
-    next: [u8; MAX],
-    prev: [u8; MAX],
+struct Walk<'a, const N: usize, M> {
+    s: &'a Scratch<N, M>,
+    next: [u8; N],
+    prev: [u8; N],
     /// Live nodes turning right or straight.
-    reflex: u64,
+    reflex: M,
     /// Tips that failed the ear test since a neighbour last changed (and reflex ones).
-    not_ear: u64,
+    not_ear: M,
     len: usize,
     /// The fan failed once: don't try again.
     no_fan: bool,
     out: &'a mut Vec<[u32; 3]>,
 }
 
-impl Walk<'_> {
+impl<const N: usize, M: Mask> Walk<'_, N, M> {
     fn next(&self, v: usize) -> usize {
         usize::from(self.next[v])
     }
@@ -73,8 +73,8 @@ impl Walk<'_> {
         self.s.p[v]
     }
 
-    fn is(&self, mask: u64, v: usize) -> bool {
-        mask & bit(v) != 0
+    fn is(&self, mask: M, v: usize) -> bool {
+        mask & bit(v) != M::NONE
     }
 
     fn turns_left(&self, a: usize, b: usize, c: usize) -> bool {
@@ -113,7 +113,7 @@ impl Walk<'_> {
     fn fast(&mut self, start: usize) -> Option<Option<usize>> {
         let (mut ear, mut stop, mut rescanned) = (start, start, false);
         while self.len > 3 {
-            if self.reflex.count_ones() <= 1 && !self.no_fan && self.try_fan(ear) {
+            if self.reflex.count() <= 1 && !self.no_fan && self.try_fan(ear) {
                 return Some(None);
             }
             if !self.is(self.not_ear, ear) {
@@ -141,7 +141,7 @@ impl Walk<'_> {
                 }
                 // a lap without an ear: a cut elsewhere may have freed a marked tip
                 rescanned = true;
-                self.not_ear = 0;
+                self.not_ear = M::NONE;
             }
         }
         Some(Some(ear))
@@ -155,15 +155,15 @@ impl Walk<'_> {
     /// every entry is current.)
     fn quality(&mut self, start: usize) -> Option<Option<usize>> {
         // by node: its entry, `u64::MAX` for none (only the nodes in use are read)
-        let mut queue = [u64::MAX; MAX];
-        let push = |w: &Self, v: usize, queue: &mut [u64; MAX]| {
+        let mut queue = [u64::MAX; N];
+        let push = |w: &Self, v: usize, queue: &mut [u64; N]| {
             if !w.is(w.reflex, v) {
                 let rank = approx_angle_rank(w.p(w.prev(v)), w.p(v), w.p(w.next(v)));
                 // as the clipper packs it: the rank's top bits above the node
                 queue[v] = (rank.to_bits() << 1) >> 32 << 32 | v as u64;
             }
         };
-        let seed = |w: &Self, from: usize, queue: &mut [u64; MAX]| {
+        let seed = |w: &Self, from: usize, queue: &mut [u64; N]| {
             let mut v = from;
             for _ in 0..w.len {
                 push(w, v, queue);
@@ -218,10 +218,10 @@ impl Walk<'_> {
         let (a, c) = (self.prev(b), self.next(b));
         let (pa, pb, pc) = (self.p(a), self.p(b), self.p(c));
         let (lo, hi) = bounds(pa, pb, pc);
-        let mut candidates = self.reflex & !bit(a) & !bit(c);
-        while candidates != 0 {
-            let r = candidates.trailing_zeros() as usize;
-            candidates &= candidates - 1;
+        let mut candidates = self.reflex & !bit::<M>(a) & !bit::<M>(c);
+        while candidates != M::NONE {
+            let r = candidates.lowest();
+            candidates = candidates.without_lowest();
             let q = self.p(r);
             let around = || [self.p(self.prev(r)), self.p(self.next(r))];
             if near(lo, hi, q) && interferes(q, around, pa, pb, pc) {
@@ -240,7 +240,7 @@ impl Walk<'_> {
         self.next[a] = c as u8;
         self.prev[c] = a as u8;
         self.len -= 1;
-        self.not_ear &= !(bit(a) | bit(c));
+        self.not_ear &= !(bit::<M>(a) | bit(c));
         let (pp, pa, pc, pn) = (
             self.p(self.prev(a)),
             self.p(a),
@@ -255,7 +255,7 @@ impl Walk<'_> {
         let (ta, tc) = (orient2d(pp, pa, pc), orient2d(pa, pc, pn));
         for (v, turn) in [(a, ta), (c, tc)] {
             if turn == Orientation::CounterClockwise {
-                self.reflex &= !bit(v);
+                self.reflex &= !bit::<M>(v);
             } else {
                 self.reflex |= bit(v);
                 self.not_ear |= bit(v);
@@ -267,10 +267,10 @@ impl Walk<'_> {
     /// With at most one reflex vertex left, the ring is star-shaped from it: fans out
     /// from it (or from `any`), if every fan triangle turns left.
     fn try_fan(&mut self, any: usize) -> bool {
-        let center = if self.reflex == 0 {
+        let center = if self.reflex == M::NONE {
             any
         } else {
-            self.reflex.trailing_zeros() as usize
+            self.reflex.lowest()
         };
         let mut v = self.next(center);
         while self.next(v) != center {

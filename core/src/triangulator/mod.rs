@@ -154,7 +154,15 @@ impl<T: Coord> Triangulator<T> {
         nesting: crate::Nesting,
     ) -> Result<(), Error> {
         let w = &mut self.worker;
-        if pipeline::small_ring_valid(&mut w.cx, &mut w.stages, vertices, ring_starts, nesting) {
+        if pipeline::small_ring_valid(
+            &mut w.cx,
+            &mut w.stages,
+            vertices,
+            ring_starts,
+            nesting,
+            // (on more than 64 nodes the pipeline's check is the faster)
+            false,
+        ) {
             return Ok(());
         }
         w.cx.keep_collinear = false;

@@ -81,8 +81,10 @@ pub(crate) fn small_ring<T: Coord>(
     let rounds = (st.clip.threads.as_ref()).is_some_and(|t| vertices.len() >= t.min);
     #[cfg(not(feature = "threads"))]
     let rounds = false;
+    // (the wide form only for the fast walk: the quality walk scans its queue, which on
+    // more than 64 nodes costs more than the pipeline's heap)
     st.small.took = !rounds
-        && small_ring_valid(cx, st, vertices, ring_starts, nesting)
+        && small_ring_valid(cx, st, vertices, ring_starts, nesting, !quality)
         && if st.small.used_wide {
             small::clip(&mut st.small.wide, quality, lenient, out)
         } else {
@@ -92,7 +94,7 @@ pub(crate) fn small_ring<T: Coord>(
 }
 
 /// Strict mode's input check by the small stage (its narrow scratch for up to 64 nodes,
-/// the wide one for more): `true` when it proved the input valid; when not,
+/// with `wide` the wide one for more): `true` when it proved the input valid; when not,
 /// [`check_input`] must decide.
 pub(crate) fn small_ring_valid<T: Coord>(
     cx: &mut Context,
@@ -100,9 +102,11 @@ pub(crate) fn small_ring_valid<T: Coord>(
     vertices: &[[T; 2]],
     ring_starts: &[usize],
     nesting: Nesting,
+    wide: bool,
 ) -> bool {
     let sm = &mut st.small;
-    let nodes = small::nodes(vertices.len(), ring_starts).filter(|_| !sm.off);
+    let limit = if wide { small::MAX } else { 64 };
+    let nodes = (small::nodes(vertices.len(), ring_starts)).filter(|&n| !sm.off && n <= limit);
     sm.took = match nodes {
         None => false,
         Some(n) => {

@@ -160,8 +160,7 @@ impl<T: Coord> Triangulator<T> {
             vertices,
             ring_starts,
             nesting,
-            // (on more than 64 nodes the pipeline's check is the faster)
-            false,
+            true,
         ) {
             return Ok(());
         }

@@ -81,8 +81,8 @@ pub(crate) fn small_ring<T: Coord>(
     let rounds = (st.clip.threads.as_ref()).is_some_and(|t| vertices.len() >= t.min);
     #[cfg(not(feature = "threads"))]
     let rounds = false;
-    // (the wide form only for the fast walk: the quality walk scans its queue, which on
-    // more than 64 nodes costs more than the pipeline's heap)
+    // (the wide form not for the quality walk: it scans its queue, which on more than 64
+    // nodes costs more than the pipeline's heap)
     st.small.took = !rounds
         && small_ring_valid(cx, st, vertices, ring_starts, nesting, !quality)
         && if st.small.used_wide {

@@ -105,12 +105,12 @@ pub(crate) fn small_ring_valid<T: Coord>(
     wide: bool,
 ) -> bool {
     let sm = &mut st.small;
-    let limit = if wide { small::MAX } else { 64 };
+    let limit = if wide { small::MAX } else { small::NARROW_MAX };
     let nodes = (small::nodes(vertices.len(), ring_starts)).filter(|&n| !sm.off && n <= limit);
     sm.took = match nodes {
         None => false,
         Some(n) => {
-            sm.used_wide = n > 64;
+            sm.used_wide = n > small::NARROW_MAX;
             if sm.used_wide {
                 small::check(cx, &mut sm.wide, vertices, ring_starts, nesting)
             } else {

@@ -52,8 +52,11 @@ pub(crate) use walk::clip_ring;
 /// polygons fit and which runs faster.
 pub(crate) const MAX: usize = 128;
 
-/// The narrow form of the stage's scratch: up to 64 nodes.
-pub(crate) type Narrow = Scratch<64, u64>;
+/// The most nodes the narrow form holds.
+pub(crate) const NARROW_MAX: usize = 64;
+
+/// The narrow form of the stage's scratch: up to [`NARROW_MAX`] nodes.
+pub(crate) type Narrow = Scratch<NARROW_MAX, u64>;
 
 /// The wide form: up to [`MAX`] nodes.
 pub(crate) type Wide = Scratch<MAX, u128>;

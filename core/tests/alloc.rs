@@ -120,7 +120,7 @@ fn inputs() -> Vec<(String, Flat, Nesting)> {
         serde_json::from_value(read_json("datasets/rect_circles.json")).expect("shapes JSON");
     let all: Rings = shapes.into_iter().flatten().collect();
     v.push(("rect_circles".to_string(), flatten(&all), Nesting::Auto));
-    // (building: one ring of 15 vertices with a closing point, the small-ring stage's)
+    // (building: one ring of 15 vertices with a closing point, the small stage's)
     for name in [
         "building",
         "water",

@@ -137,7 +137,7 @@ fn runs_taken(nodes: usize) -> usize {
     }
 }
 
-/// Two triangulators: one that may take the small-ring stage, one that never does.
+/// Two triangulators: one that may take the small stage, one that never does.
 fn pair<T: Coord>() -> (Triangulator<T>, Triangulator<T>) {
     let mut without = Triangulator::new();
     without.set_small_rings(false);

@@ -14,4 +14,6 @@ pub(crate) use corners::{corner_contains, on_ray, same_ray, LeastAngle};
 pub(crate) use ears::{bounds, interferes, near};
 pub(crate) use exact::{in_range, SnapGrid};
 pub(crate) use predicates::*;
-pub(crate) use segments::{boxed_segments_meet, compare_hits, crosses, overlaps, segments_meet};
+pub(crate) use segments::{
+    boxed_segments_meet, compare_hits, crosses, overlaps, ray_crossing, segments_meet,
+};

@@ -98,3 +98,17 @@ fn side_of_line(y: f64, a: Point, b: Point, c: Point, d: Point) -> Option<Orderi
     }
     Some(ord)
 }
+
+/// Signed crossing of the ray from `v` towards +x with the edge a → b (half-open in y, so
+/// a vertex on the ray counts once): +1 upwards, −1 downwards, 0 when missed. Summed over
+/// a ring, the ring's winding number round `v` (for `v` on none of its edges).
+#[inline]
+pub(crate) fn ray_crossing(a: Point, b: Point, v: Point) -> i64 {
+    if a.y <= v.y && v.y < b.y && orient2d(a, b, v) == Orientation::CounterClockwise {
+        1
+    } else if b.y <= v.y && v.y < a.y && orient2d(a, b, v) == Orientation::Clockwise {
+        -1
+    } else {
+        0
+    }
+}

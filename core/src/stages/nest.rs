@@ -24,8 +24,8 @@
 //! the left of each edge — the convention `bridge` and `clip` rely on.
 
 use crate::context::{Context, LoadedRing};
-use crate::geom::{cmp_around, cmp_xy, left_of, on_segment, orient2d, Orientation, Point};
-use crate::geom::{compare_hits, corner_contains, on_ray};
+use crate::geom::{cmp_around, cmp_xy, on_segment, orient2d, Orientation, Point};
+use crate::geom::{compare_hits, corner_contains, on_ray, ray_crossing as crossing};
 use crate::structures::NodeId;
 use crate::{Error, Nesting};
 use core::cmp::Ordering;
@@ -1028,18 +1028,6 @@ impl Ray {
             Ray::North => Point::new(p.y, -p.x),
             Ray::South => Point::new(-p.y, p.x),
         }
-    }
-}
-
-/// Signed crossing of the ray from `v` towards +x with the edge a → b (half-open in y, so
-/// a vertex on the ray counts once): +1 upwards, −1 downwards, 0 when missed.
-fn crossing(a: Point, b: Point, v: Point) -> i64 {
-    if a.y <= v.y && v.y < b.y && left_of(a, b, v) {
-        1
-    } else if b.y <= v.y && v.y < a.y && orient2d(a, b, v) == Orientation::Clockwise {
-        -1
-    } else {
-        0
     }
 }
 

@@ -7,9 +7,7 @@
 use core::cmp::Ordering;
 
 use super::{bit, reverse, Mask, Scratch, RINGS};
-use crate::geom::{
-    compare_hits, corner_contains, left_of, orient2d, LeastAngle, Orientation, Point,
-};
+use crate::geom::{compare_hits, corner_contains, left_of, ray_crossing, LeastAngle, Point};
 use crate::Nesting;
 
 /// Step 5: decides the rings' roles by containment — exactly one ring contains every
@@ -43,19 +41,13 @@ pub(super) fn nest<const N: usize, M: Mask>(s: &mut Scratch<N, M>, nesting: Nest
     true
 }
 
-/// Whether `q`, on no edge of ring `r`, lies inside it: the ray from `q` towards +x
-/// crosses it an odd number of times (half-open in y: a vertex on the ray counts once).
+/// Whether `q`, on no edge of ring `r`, lies inside it: the ring winds round it (`nest`'s
+/// count, [`ray_crossing`]).
 fn inside<const N: usize, M: Mask>(s: &Scratch<N, M>, r: usize, q: Point) -> bool {
-    let mut odd = false;
-    for v in s.ring(r) {
-        let (a, b) = (s.p[v], s.p[s.next(v)]);
-        if (a.y <= q.y) != (b.y <= q.y) {
-            // upwards, the crossing is right of q when q is left of the edge
-            let left = orient2d(a, b, q) == Orientation::CounterClockwise;
-            odd ^= left == (b.y > a.y);
-        }
-    }
-    odd
+    let winding: i64 = (s.ring(r))
+        .map(|v| ray_crossing(s.p[v], s.p[s.next(v)], q))
+        .sum();
+    winding != 0
 }
 
 /// Step 6: merges every hole into the outer ring, in `bridge`'s order (descending

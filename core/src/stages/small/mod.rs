@@ -232,7 +232,7 @@ pub(crate) fn nodes(vertices: usize, ring_starts: &[usize]) -> Option<usize> {
 /// Steps 1–5: loads, filters, proves, orients and nests the rings (strict mode's input
 /// check). Records the dropped vertices in `cx.dropped` (cleared first). `false` when the
 /// input needs the pipeline; then `cx` holds nothing the pipeline reads (it resets it).
-/// The caller has asked [`fits`].
+/// The caller has asked [`nodes`].
 pub(crate) fn check<T: Coord, const N: usize, M: Mask>(
     cx: &mut Context,
     s: &mut Scratch<N, M>,

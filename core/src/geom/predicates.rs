@@ -48,8 +48,31 @@ impl Orientation {
 }
 
 /// Exact orientation of the triangle a, b, c.
-#[inline]
+///
+/// The floating-point filter is `robust`'s own (its error bound, Ozaki et al.'s form),
+/// inlined at every call; only where it cannot decide does the call go to `robust`'s
+/// adaptive predicate, which filters once more and then computes exactly.
+#[inline(always)]
 pub(crate) fn orient2d(a: Point, b: Point, c: Point) -> Orientation {
+    // robust's THETA: the relative error bound of the determinant below
+    const THETA: f64 = 3.330_669_062_177_372_2e-16;
+    let left = (a.x - c.x) * (b.y - c.y);
+    let right = (a.y - c.y) * (b.x - c.x);
+    let det = left - right;
+    let bound = THETA * (left + right).abs();
+    if det > bound {
+        Orientation::CounterClockwise
+    } else if -det > bound {
+        Orientation::Clockwise
+    } else {
+        orient2d_exact(a, b, c)
+    }
+}
+
+/// [`orient2d`] where the inlined filter could not decide (and for non-finite input).
+#[cold]
+#[inline(never)]
+fn orient2d_exact(a: Point, b: Point, c: Point) -> Orientation {
     let det = robust::orient2d(
         robust::Coord { x: a.x, y: a.y },
         robust::Coord { x: b.x, y: b.y },

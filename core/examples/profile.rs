@@ -80,7 +80,7 @@ fn main() {
     }
     let per_run = began.elapsed().as_secs_f64() / runs as f64;
     println!(
-        "{path}: {} triangles per run, {:.6} ms per run",
+        "{path}: {} triangles per run, {:.9} ms per run",
         triangles / runs.max(1),
         per_run * 1e3
     );

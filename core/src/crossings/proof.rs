@@ -51,6 +51,25 @@ pub(crate) struct ProofScratch {
     flagged: Vec<NodeId>,
     /// Chain scan: the x-monotone chains of the rings.
     chains: Vec<Chain>,
+    /// By node: listed in `shared` already (each node once, however many pairs of edges
+    /// meet at it; false again after each proof).
+    listed: Vec<bool>,
+}
+
+/// The nodes at shared positions as [`contact`] finds them, each listed once.
+struct Shared<'a> {
+    nodes: &'a mut Vec<NodeId>,
+    listed: &'a mut [bool],
+}
+
+impl Shared<'_> {
+    fn push(&mut self, n: NodeId) {
+        let listed = &mut self.listed[n.0 as usize];
+        if !*listed {
+            *listed = true;
+            self.nodes.push(n);
+        }
+    }
 }
 
 /// A run of consecutive edges of one ring along which x never decreases or never
@@ -122,17 +141,29 @@ pub(crate) fn edges_meet_at_vertices(
     collect_boxes(pool, starts, &mut scratch.boxes, Some(nodes));
     touches.clear();
     shared.clear();
+    let mut listed = core::mem::take(&mut scratch.listed);
+    if listed.len() < pool.len() {
+        listed.resize(pool.len(), false);
+    }
+    let mut nodes = Shared {
+        nodes: shared,
+        listed: &mut listed,
+    };
     let scan = scan(pool, scratch, BUDGET_PER_EDGE, |e, f| {
-        contact(pool, e, f, turns_proper, touches, shared)
+        contact(pool, e, f, turns_proper, touches, &mut nodes)
     });
+    for &n in shared.iter() {
+        listed[n.0 as usize] = false;
+    }
+    scratch.listed = listed;
     if scan != Scan::Done {
         return Contact::NotProved;
     }
     if touches.is_empty() && shared.is_empty() {
         return Contact::Apart;
     }
+    // (each node once already)
     shared.sort_unstable_by(|&a, &b| cmp_xy(pool.p(a), pool.p(b)).then(a.cmp(&b)));
-    shared.dedup();
     touches.sort_unstable_by_key(|t| (t.edge, t.vertex));
     touches.dedup();
     Contact::AtVertices
@@ -147,7 +178,7 @@ fn contact(
     f: &EdgeBox,
     turns_proper: bool,
     touches: &mut Vec<Touch>,
-    shared: &mut Vec<NodeId>,
+    shared: &mut Shared,
 ) -> bool {
     use Orientation::Collinear;
     if e.to == f.from || f.to == e.from {
@@ -165,7 +196,8 @@ fn contact(
         for (v, g) in [(f.from, e), (f.to, e), (e.from, f), (e.to, f)] {
             let (p, g0, g1) = (pool.p(v), pool.p(g.from), pool.p(g.to));
             if p == g0 || p == g1 {
-                shared.extend([v, if p == g0 { g.from } else { g.to }]);
+                shared.push(v);
+                shared.push(if p == g0 { g.from } else { g.to });
             } else if within_box(g0, g1, p) {
                 touches.push(Touch {
                     vertex: v,
@@ -203,7 +235,11 @@ fn contact(
     };
     match (vertex_of(e), vertex_of(f)) {
         (Some(_), Some(_)) => {
-            shared.extend([e.from, e.to, f.from, f.to].into_iter().filter(|&n| at(n)));
+            for n in [e.from, e.to, f.from, f.to] {
+                if at(n) {
+                    shared.push(n);
+                }
+            }
         }
         (None, Some(v)) => touches.push(Touch {
             vertex: v,

@@ -350,13 +350,19 @@ fn decide_hub(cx: &mut Context, s: &mut Scratch, from: usize, to: usize) {
 /// in the grid (a glyph: an outer ring and a hole or two).
 const DIRECT_WORK: usize = 512;
 
-/// Where no two rings meet (no position shared by two nodes, no vertex on an edge, no
-/// crossing) and they are few and small (see [`DIRECT_WORK`]): each ring's depth, counted
-/// directly as the rings whose winding number around its first node is not zero. Such
-/// rings are disjoint curves, so one vertex decides for the whole ring, and it lies on no
-/// other ring, so the winding number is exact. False, deciding nothing, otherwise.
+/// Where no two edges cross, the rings meet only at points ([`meet_at_points`]) and they
+/// are few and small (see [`DIRECT_WORK`]): each ring's depth, counted directly as the
+/// rings whose winding number around one of its nodes is not zero, a node at no shared
+/// position. Such a node lies on no other ring (`clean` split every edge through a
+/// vertex, which makes a shared position there), so its winding numbers are exact; and
+/// rings that only touch have disjoint insides or one inside the other, so it decides
+/// for the whole ring. The node
+/// is the ring's rightmost, as [`depth_of`] decides; strict mode may take any other,
+/// since rings crossing at a shared vertex, which it could tell apart, are refused
+/// anyway (by `check_shared_positions`, or as a hole outside). False, deciding nothing,
+/// where a ring has no such node, or the rings are many.
 fn direct_depths(cx: &mut Context) -> bool {
-    if !cx.shared.is_empty() || !cx.crossings.is_empty() {
+    if !cx.crossings.is_empty() || !meet_at_points(cx) {
         return false;
     }
     let (mut alive, mut edges) = (0, 0);
@@ -371,7 +377,19 @@ fn direct_depths(cx: &mut Context) -> bool {
             continue;
         }
         let pool = &cx.pool;
-        let v = pool.p(cx.rings[b].start);
+        let first = cx.rings[b].rightmost;
+        let off = |n: NodeId| nodes_at(cx, pool.p(n)) == 0;
+        let v = if cx.shared.is_empty() || off(first) {
+            first
+        } else if cx.lenient {
+            return false;
+        } else {
+            match pool.ring(first).find(|&n| off(n)) {
+                Some(n) => n,
+                None => return false,
+            }
+        };
+        let v = pool.p(v);
         let around = |ring: &crate::context::Ring| {
             let winding: i64 = pool
                 .ring(ring.start)
@@ -383,6 +401,37 @@ fn direct_depths(cx: &mut Context) -> bool {
             .filter(|&(r, ring)| r != b && ring.alive && around(ring))
             .count();
         cx.rings[b].depth = depth as u32;
+    }
+    true
+}
+
+/// Whether the rings meet, if at all, only at isolated points, each ring once there:
+/// no position holds two nodes of one ring (a ring touching itself, or lobes cut from
+/// it), and no two rings share an edge (lying along each other: `clean` split
+/// overlapping edges where they end, so such edges have both ends in common). Then every
+/// ring is a simple curve, and two rings that do not cross at a shared point lie each on
+/// one side of the other.
+fn meet_at_points(cx: &Context) -> bool {
+    let pool = &cx.pool;
+    let mut i = 0;
+    while i < cx.shared.len() {
+        let j = cx.same_position_end(i);
+        let group = &cx.shared[i..j];
+        for (k, &n) in group.iter().enumerate() {
+            let (ring, ahead) = (pool.get(n).ring, pool.p(pool.next(n)));
+            for &m in &group[k + 1..] {
+                let along = [pool.next(m), pool.prev(m)].map(|e| pool.p(e));
+                if pool.get(m).ring == ring || along.contains(&ahead) {
+                    return false;
+                }
+                // and m's edge ahead along n's edge behind (n's ahead along m's behind
+                // is the `along` test)
+                if pool.p(pool.prev(n)) == pool.p(pool.next(m)) {
+                    return false;
+                }
+            }
+        }
+        i = j;
     }
     true
 }
@@ -1281,6 +1330,72 @@ mod tests {
         let hole = [[0.0, 0.0], [2.0, 0.0], [1.0, 1.0]];
         let got = depths(&[&outer, &hole], Nesting::Auto, false);
         assert_eq!(got, Ok(vec![Some((0, false)), Some((1, true))]));
+    }
+
+    /// Holes touching the outer ring, each other and their islands at vertices (and
+    /// along the outer ring's edges), in any order, winding and quarter turn: the depths
+    /// by construction, whether the rings are few (counted directly) or many (the grid).
+    #[test]
+    fn touching_rings_nest_by_construction_directly_and_through_the_grid() {
+        let mut pick = crate::testing::random(0x7e57_1e55);
+        let (mut direct, mut grid) = (0, 0);
+        for case in 0..400 {
+            // an n × n grid of 10 × 10 cells in a square: in a cell at (x, y), maybe a
+            // triangular hole from its lower left corner (on the outer ring in the first
+            // row and column) to a point inside and to its upper right corner (another
+            // hole's lower left corner, or on the outer ring), and maybe an island in the
+            // hole from the same lower left corner
+            let n = if case % 4 == 3 { 5 } else { 2 };
+            let side = 10.0 * n as f64;
+            let mut rings = vec![vec![[0.0, 0.0], [side, 0.0], [side, side], [0.0, side]]];
+            let mut want = vec![0];
+            for cell in 0..n * n {
+                let (x, y) = ((cell % n) as f64 * 10.0, (cell / n) as f64 * 10.0);
+                if pick(10) < 3 {
+                    continue;
+                }
+                let a = 3.0 + pick(5) as f64;
+                rings.push(vec![[x, y], [x + 9.0, y + a], [x + 10.0, y + 10.0]]);
+                want.push(1);
+                if pick(2) == 0 {
+                    rings.push(vec![[x, y], [x + 5.0, y + 4.0], [x + 6.0, y + 5.5]]);
+                    want.push(2);
+                }
+            }
+            for ring in rings.iter_mut() {
+                if pick(2) == 0 {
+                    ring.reverse();
+                }
+            }
+            // shuffled, the outer ring anywhere
+            let mut order: Vec<usize> = (0..rings.len()).collect();
+            for k in (1..order.len()).rev() {
+                order.swap(k, pick(k as u64 + 1) as usize);
+            }
+            let turns = pick(4);
+            let turn = |p: [f64; 2]| (0..turns).fold(p, |[x, y], _| [-y, x]);
+            let shuffled: Vec<Vec<[f64; 2]>> = (order.iter())
+                .map(|&r| rings[r].iter().map(|&p| turn(p)).collect())
+                .collect();
+            let refs: Vec<&[[f64; 2]]> = shuffled.iter().map(Vec::as_slice).collect();
+            let (vertices, starts) = flatten(&refs);
+            let (mut cx, mut st) = cleaned(&vertices, &starts, false);
+            nest(&mut cx, &mut st.nest, Nesting::Auto).expect("valid");
+            // the grid is built only when the depths were not counted directly
+            if cx.edge_index.is_current() {
+                grid += 1;
+            } else {
+                direct += 1;
+            }
+            for ring in cx.rings.iter().filter(|r| r.alive) {
+                let r = ring.input as usize;
+                assert_eq!(ring.depth, want[order[r]], "case {case}, ring {r}");
+            }
+        }
+        assert!(
+            direct > 50 && grid > 50,
+            "{direct} direct, {grid} through the grid"
+        );
     }
 
     #[test]

@@ -405,12 +405,11 @@ fn direct_depths(cx: &mut Context) -> bool {
     true
 }
 
-/// Whether the rings meet, if at all, only at isolated points, each ring once there:
-/// no position holds two nodes of one ring (a ring touching itself, or lobes cut from
-/// it), and no two rings share an edge (lying along each other: `clean` split
-/// overlapping edges where they end, so such edges have both ends in common). Then every
-/// ring is a simple curve, and two rings that do not cross at a shared point lie each on
-/// one side of the other.
+/// Whether the rings meet, if at all, only at isolated points: no two rings (nor two
+/// stretches of one) share an edge, lying along each other (`clean` split overlapping
+/// edges where they end, so such edges have both ends in common). Then two rings that do
+/// not cross at a shared point lie each on one side of the other, whether or not they
+/// touch themselves too.
 fn meet_at_points(cx: &Context) -> bool {
     let pool = &cx.pool;
     let mut i = 0;
@@ -418,10 +417,10 @@ fn meet_at_points(cx: &Context) -> bool {
         let j = cx.same_position_end(i);
         let group = &cx.shared[i..j];
         for (k, &n) in group.iter().enumerate() {
-            let (ring, ahead) = (pool.get(n).ring, pool.p(pool.next(n)));
+            let ahead = pool.p(pool.next(n));
             for &m in &group[k + 1..] {
                 let along = [pool.next(m), pool.prev(m)].map(|e| pool.p(e));
-                if pool.get(m).ring == ring || along.contains(&ahead) {
+                if along.contains(&ahead) {
                     return false;
                 }
                 // and m's edge ahead along n's edge behind (n's ahead along m's behind
@@ -1396,6 +1395,49 @@ mod tests {
             direct > 50 && grid > 50,
             "{direct} direct, {grid} through the grid"
         );
+    }
+
+    /// An outer ring touching itself (two square lobes pinched at a corner, one with a
+    /// notch), with a hole in each lobe, one of them at the pinch: counted directly,
+    /// without the grid, in every quarter turn.
+    #[test]
+    fn a_ring_touching_itself_nests_its_holes_directly() {
+        let outer = [
+            [0.0, 0.0],
+            [10.0, 0.0],
+            [10.0, 10.0],
+            [20.0, 10.0],
+            [20.0, 20.0],
+            [10.0, 20.0],
+            [10.0, 10.0],
+            [0.0, 10.0],
+            [0.0, 6.0],
+            [4.0, 5.0],
+            [0.0, 4.0],
+        ];
+        let at_pinch = [[10.0, 10.0], [13.0, 12.0], [12.0, 13.0]];
+        let inside = [[6.0, 2.0], [8.0, 2.0], [8.0, 4.0]];
+        for turns in 0..4 {
+            let turn = |ring: &[[f64; 2]]| -> Vec<[f64; 2]> {
+                ring.iter()
+                    .map(|&p| (0..turns).fold(p, |[x, y], _| [-y, x]))
+                    .collect()
+            };
+            let rings = [turn(&outer), turn(&at_pinch), turn(&inside)];
+            let refs: Vec<&[[f64; 2]]> = rings.iter().map(Vec::as_slice).collect();
+            let (vertices, starts) = flatten(&refs);
+            let (mut cx, mut st) = cleaned(&vertices, &starts, false);
+            nest(&mut cx, &mut st.nest, Nesting::FirstIsOuter).expect("valid");
+            assert!(
+                !cx.edge_index.is_current(),
+                "{turns} turns: through the grid"
+            );
+            let depth = |input: u32| {
+                let ring = cx.rings.iter().find(|r| r.alive && r.input == input);
+                ring.map(|r| r.depth)
+            };
+            assert_eq!([depth(0), depth(1), depth(2)], [Some(0), Some(1), Some(1)]);
+        }
     }
 
     #[test]

@@ -14,8 +14,9 @@
 //! ray from B's rightmost vertex meets is unambiguous (met inside, alone, no ring through
 //! V, no crossings), B's depth is that edge's ring's depth, plus one if V lies on its inner
 //! side. The ray then stops at that edge, a cell or two away. And a few small rings that
-//! meet nowhere (a glyph) skip the grid: each one's depth is counted directly, from the
-//! others' winding numbers around one of its vertices.
+//! meet nowhere (a glyph), or only at points (a hole touching its polygon's corner), skip
+//! the grid: each one's depth is counted directly, from the others' winding numbers
+//! around one of its vertices that lies on no other ring.
 //!
 //! `Nesting::FirstIsOuter` (earcut's convention) takes ring 0 as the outer boundary and the
 //! rest as its holes; strict mode checks that this is true.
@@ -345,9 +346,9 @@ fn decide_hub(cx: &mut Context, s: &mut Scratch, from: usize, to: usize) {
     (s.hub_corners, s.hub_ends, s.hub_inner, s.order) = (corners, ends, inner, order);
 }
 
-/// [`direct_depths`] decides rings that meet nowhere while their number times their edges
-/// is at most this: a walk over every edge per ring then costs less than listing the edges
-/// in the grid (a glyph: an outer ring and a hole or two).
+/// [`direct_depths`] decides rings that meet at most at points while their number times
+/// their edges is at most this: a walk over every edge per ring then costs less than
+/// listing the edges in the grid (a glyph: an outer ring and a hole or two).
 const DIRECT_WORK: usize = 512;
 
 /// Where no two edges cross, the rings meet only at points ([`meet_at_points`]) and they

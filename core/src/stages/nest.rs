@@ -357,11 +357,10 @@ const DIRECT_WORK: usize = 512;
 /// position. Such a node lies on no other ring (`clean` split every edge through a
 /// vertex, which makes a shared position there), so its winding numbers are exact; and
 /// rings that only touch have disjoint insides or one inside the other, so it decides
-/// for the whole ring. The node
-/// is the ring's rightmost, as [`depth_of`] decides; strict mode may take any other,
-/// since rings crossing at a shared vertex, which it could tell apart, are refused
-/// anyway (by `check_shared_positions`, or as a hole outside). False, deciding nothing,
-/// where a ring has no such node, or the rings are many.
+/// for the whole ring. The node is the ring's rightmost, as [`depth_of`] decides; strict
+/// mode may take any other, since rings crossing at a shared vertex, which it could tell
+/// apart, are refused anyway (by `check_shared_positions`, or as a hole outside). False,
+/// deciding nothing, where a ring has no such node, or the rings are many.
 fn direct_depths(cx: &mut Context) -> bool {
     if !cx.crossings.is_empty() || !meet_at_points(cx) {
         return false;
@@ -1332,9 +1331,9 @@ mod tests {
         assert_eq!(got, Ok(vec![Some((0, false)), Some((1, true))]));
     }
 
-    /// Holes touching the outer ring, each other and their islands at vertices (and
-    /// along the outer ring's edges), in any order, winding and quarter turn: the depths
-    /// by construction, whether the rings are few (counted directly) or many (the grid).
+    /// Holes touching the outer ring, each other and their islands at vertices, in any
+    /// order, winding and quarter turn: the depths by construction, whether the rings are
+    /// few (counted directly) or many (the grid).
     #[test]
     fn touching_rings_nest_by_construction_directly_and_through_the_grid() {
         let mut pick = crate::testing::random(0x7e57_1e55);
@@ -1439,6 +1438,25 @@ mod tests {
             };
             assert_eq!([depth(0), depth(1), depth(2)], [Some(0), Some(1), Some(1)]);
         }
+    }
+
+    /// Rings lying along each other (a hole along part of its polygon's edge, and one
+    /// sharing a whole edge with the first) are few, but take the general rule.
+    #[test]
+    fn rings_lying_along_each_other_take_the_general_rule() {
+        let outer = square(0.0, 0.0, 10.0, true);
+        let along = [[0.0, 0.0], [5.0, 0.0], [2.0, 3.0]];
+        let beside = [[5.0, 0.0], [2.0, 3.0], [6.0, 3.0]];
+        let refs = [&outer[..], &along, &beside];
+        let (vertices, starts) = flatten(&refs);
+        let (mut cx, mut st) = cleaned(&vertices, &starts, false);
+        nest(&mut cx, &mut st.nest, Nesting::FirstIsOuter).expect("valid");
+        assert!(cx.edge_index.is_current(), "counted directly");
+        let depths: Vec<u32> = (cx.rings.iter())
+            .filter(|r| r.alive)
+            .map(|r| r.depth)
+            .collect();
+        assert_eq!(depths, [0, 1, 1]);
     }
 
     #[test]

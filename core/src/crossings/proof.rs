@@ -25,16 +25,16 @@ use crate::structures::{NodeId, Pool};
 /// Box comparisons allowed per edge (plus a constant) before the proof gives up.
 const BUDGET_PER_EDGE: usize = 16;
 
-/// Pairs of edges whose boxes overlap that [`edges_meet_at_vertices`] decides per edge
-/// (plus a constant) before it gives up: a valid input's proof decides about one per edge
-/// (1.0–1.3 on earcut's fixtures and the glyphs), a grid of squares touching along their
-/// sides (earcut's touching-holes3–6) more than ten, each with exact signs on collinear
-/// edges, where the sweep is faster.
-const CONTACTS_PER_EDGE: usize = 4;
-
 /// The same for [`mark_crossed`]: crossing input has many boxes over each other, and giving
 /// up costs a second, slower pass over the edges.
 const CROSSED_BUDGET_PER_EDGE: usize = 256;
+
+/// Pairs of edges whose boxes overlap that [`edges_meet_at_vertices`] decides per edge
+/// (plus a constant) before it gives up: a valid input's proof decides about one per edge
+/// (1.0–1.3 on the earcut fixtures it proves), a grid of squares touching along their
+/// sides (earcut's touching-holes3–5) more than ten, each with exact signs on collinear
+/// edges, where the sweep is faster.
+const CONTACTS_PER_EDGE: usize = 4;
 
 /// One edge `from → to` with its bounding box.
 #[derive(Clone, Copy, Debug)]

@@ -362,14 +362,15 @@ const DIRECT_WORK: usize = 512;
 /// apart, are refused anyway (by `check_shared_positions`, or as a hole outside). False,
 /// deciding nothing, where a ring has no such node, or the rings are many.
 fn direct_depths(cx: &mut Context) -> bool {
-    if !cx.crossings.is_empty() || !meet_at_points(cx) {
+    if !cx.crossings.is_empty() {
         return false;
     }
     let (mut alive, mut edges) = (0, 0);
     for ring in cx.rings.iter().filter(|r| r.alive) {
         (alive, edges) = (alive + 1, edges + ring.len as usize);
     }
-    if alive * edges > DIRECT_WORK {
+    // (the size first: it is cheaper to learn than where the rings meet)
+    if alive * edges > DIRECT_WORK || !meet_at_points(cx) {
         return false;
     }
     for b in 0..cx.rings.len() {

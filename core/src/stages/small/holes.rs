@@ -6,7 +6,7 @@
 
 use core::cmp::Ordering;
 
-use super::{bit, reverse, Mask, Scratch, RINGS};
+use super::{bit, members, reverse, Mask, Scratch, RINGS};
 use crate::geom::{compare_hits, corner_contains, left_of, ray_crossing, LeastAngle, Point};
 use crate::Nesting;
 
@@ -122,7 +122,7 @@ fn ring_mask<const N: usize, M: Mask>(s: &Scratch<N, M>, r: usize) -> M {
 fn target<const N: usize, M: Mask>(s: &Scratch<N, M>, merged: M, m: usize) -> Option<usize> {
     let pm = s.p[m];
     let mut best: Option<(Point, Point)> = None;
-    for a in nodes(merged) {
+    for a in members(merged) {
         let (pa, pb) = (s.p[a], s.p[s.next(a)]);
         if !(pa.y <= pm.y && pm.y <= pb.y && pa.y < pb.y && left_of(pa, pb, pm)) {
             continue;
@@ -145,7 +145,7 @@ fn target<const N: usize, M: Mask>(s: &Scratch<N, M>, merged: M, m: usize) -> Op
         // (`bridge::least_angle_in_triangle` over the merged nodes)
         let p = if pb.x > pa.x { pb } else { pa };
         let mut search = LeastAngle::new(pm, pa, pb, p);
-        for q in nodes(merged).map(|r| s.p[r]) {
+        for q in members(merged).map(|r| s.p[r]) {
             if search.near(q) {
                 search.offer(q);
             }
@@ -153,7 +153,7 @@ fn target<const N: usize, M: Mask>(s: &Scratch<N, M>, merged: M, m: usize) -> Op
         search.best()
     };
     let mut found = None;
-    for x in nodes(merged).filter(|&x| s.p[x] == target) {
+    for x in members(merged).filter(|&x| s.p[x] == target) {
         if corner_contains(target, s.p[s.next(x)], s.p[s.prev(x)], pm) == Some(true) {
             if found.is_some() {
                 return None;
@@ -162,15 +162,4 @@ fn target<const N: usize, M: Mask>(s: &Scratch<N, M>, merged: M, m: usize) -> Op
         }
     }
     found
-}
-
-/// The nodes of a mask, lowest first.
-fn nodes<M: Mask>(mut mask: M) -> impl Iterator<Item = usize> {
-    core::iter::from_fn(move || {
-        (mask != M::NONE).then(|| {
-            let v = mask.lowest();
-            mask = mask.without_lowest();
-            v
-        })
-    })
 }

@@ -213,6 +213,17 @@ fn bit<M: Mask>(v: usize) -> M {
     M::bit(v)
 }
 
+/// The nodes of a set, lowest first.
+fn members<M: Mask>(mut mask: M) -> impl Iterator<Item = usize> {
+    core::iter::from_fn(move || {
+        (mask != M::NONE).then(|| {
+            let v = mask.lowest();
+            mask = mask.without_lowest();
+            v
+        })
+    })
+}
+
 /// The nodes the stage needs for this input (its vertices and two copies per hole) when
 /// it may take it: one ring of 3 to [`MAX`] vertices, or up to [`RINGS`] rings of at
 /// least three vertices each whose nodes number at most [`MAX`]. A scratch of `N` nodes

@@ -5,7 +5,7 @@
 //! needs the clipper's tidying, and hands the polygon back instead (the fixtures, glyphs
 //! and generated polygons of `core/tests/small.rs` never get there).
 
-use super::{bit, Mask, Scratch};
+use super::{bit, members, Mask, Scratch};
 use crate::geom::{approx_angle_rank, bounds, interferes, near, orient2d, Orientation, Point};
 
 /// Clips the checked (and bridged) polygon into `out` (cleared first) with the strategy's
@@ -218,17 +218,12 @@ impl<const N: usize, M: Mask> Walk<'_, N, M> {
         let (a, c) = (self.prev(b), self.next(b));
         let (pa, pb, pc) = (self.p(a), self.p(b), self.p(c));
         let (lo, hi) = bounds(pa, pb, pc);
-        let mut candidates = self.reflex & !bit::<M>(a) & !bit::<M>(c);
-        while candidates != M::NONE {
-            let r = candidates.lowest();
-            candidates = candidates.without_lowest();
+        let candidates = self.reflex & !bit::<M>(a) & !bit::<M>(c);
+        !members(candidates).any(|r| {
             let q = self.p(r);
             let around = || [self.p(self.prev(r)), self.p(self.next(r))];
-            if near(lo, hi, q) && interferes(q, around, pa, pb, pc) {
-                return false;
-            }
-        }
-        true
+            near(lo, hi, q) && interferes(q, around, pa, pb, pc)
+        })
     }
 
     /// Cuts the ear at `b`; returns its successor. The neighbours' marks are cleared and

@@ -7,8 +7,9 @@
 //! [`EdgeIndex::invalidate`], and the next [`EdgeIndex::ensure`] rebuilds it.
 //!
 //! A few edges asked a few questions (a glyph's hole or two) are not worth a grid:
-//! [`EdgeIndex::ensure`] then only lists the edges, and [`EdgeIndex::query`] hands
-//! out all of them. Every caller tests what it gets exactly, so either answer is right.
+//! [`EdgeIndex::ensure`] (and `nest`, through [`EdgeIndex::rebuild_or_list`], for a few
+//! dozen edges) then only lists the edges, and [`EdgeIndex::query`] hands out all of
+//! them. Every caller tests what it gets exactly, so either answer is right.
 
 use super::Ring;
 use crate::geom::Point;
@@ -48,6 +49,20 @@ impl EdgeIndex {
         for ring in rings.iter().filter(|r| r.alive) {
             self.edges.extend(pool.ring(ring.start));
             if self.edges.len().saturating_mul(questions) > DIRECT_WORK {
+                return self.rebuild(pool, rings);
+            }
+        }
+        self.listed = true;
+        self.current = true;
+    }
+
+    /// Lists every live edge of the live rings again: only listed when they number at
+    /// most `list_up_to`, else in the grid.
+    pub fn rebuild_or_list(&mut self, pool: &Pool, rings: &[Ring], list_up_to: usize) {
+        self.edges.clear();
+        for ring in rings.iter().filter(|r| r.alive) {
+            self.edges.extend(pool.ring(ring.start));
+            if self.edges.len() > list_up_to {
                 return self.rebuild(pool, rings);
             }
         }

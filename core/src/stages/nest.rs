@@ -8,7 +8,7 @@
 //! passing through V (touching B there) are decided locally instead, by whether B's corner
 //! at V lies inside theirs. The edges come from a grid index; the ray runs along the grid
 //! row or column with the fewest cells to the border, so a ring costs those cells, not the
-//! whole input.
+//! whole input. (A few dozen edges are only listed, and every ray meets all of them.)
 //!
 //! Usually it costs less: rings go by descending rightmost x, and when the first edge the
 //! ray from B's rightmost vertex meets is unambiguous (met inside, alone, no ring through
@@ -204,7 +204,8 @@ fn compute_depths(cx: &mut Context, s: &mut Scratch) -> Result<(), Error> {
     if direct_depths(cx) {
         return Ok(());
     }
-    cx.edge_index.rebuild(&cx.pool, &cx.rings);
+    cx.edge_index
+        .rebuild_or_list(&cx.pool, &cx.rings, LISTED_EDGES);
     s.ring_slot.clear();
     s.ring_slot.resize(cx.rings.len(), NO_SLOT);
     s.depth_known.clear();
@@ -253,6 +254,11 @@ fn compute_depths(cx: &mut Context, s: &mut Scratch) -> Result<(), Error> {
         None => Ok(()),
     }
 }
+
+/// Up to this many edges, [`compute_depths`] only lists them, without a grid: every
+/// winding number and ray scans them all, which costs less than building the grid and
+/// walking its cells (measured on earcut's fixtures of rings lying along each other).
+const LISTED_EDGES: usize = 64;
 
 /// Strict mode, no crossings: the rings through each position where more than
 /// [`FEW_AT_A_HUB`] nodes lie, decided there all at once (see [`decide_hub`]).
@@ -594,7 +600,7 @@ fn edges_through(cx: &Context, p: Point, at_vertex: bool) -> impl Iterator<Item 
     let (listed, grid) = if at_vertex && cx.crossings.is_empty() {
         (shared_at(cx, p), None)
     } else {
-        (&[][..], Some(cx.edge_index.grid().query(p, p)))
+        (&[][..], Some(cx.edge_index.query(p, p)))
     };
     let pool = &cx.pool;
     (listed.iter())
@@ -788,8 +794,14 @@ fn decide_listed(
 /// The walk along the grid row stops as in `bridge::nearest_hit`: edges not seen yet lie
 /// wholly in later columns.
 fn depth_from_nearest(cx: &Context, s: &Scratch, b: usize, pv: Point) -> Option<u32> {
-    let grid = &cx.edge_index.grid();
     let mut near = Nearest::default();
+    if let Some(edges) = cx.edge_index.listed() {
+        for &n in edges {
+            near.visit(cx, b, pv, n);
+        }
+        return near.depth(cx, s, pv);
+    }
+    let grid = &cx.edge_index.grid();
     let row = grid.row(pv.y);
     let east = Point::new(f64::INFINITY, pv.y);
     for n in grid.long(pv, east).chain(grid.row_list(row)) {
@@ -807,26 +819,7 @@ fn depth_from_nearest(cx: &Context, s: &Scratch, b: usize, pv: Point) -> Option<
             break;
         }
     }
-    let touch = Point::new(near.touch_x, pv.y);
-    let Some(hit) = near.best else {
-        if near.touch_x.is_infinite() {
-            return (!near.through_origin).then_some(0);
-        }
-        return depth_from_vertex(cx, s, &near, pv, touch);
-    };
-    if near.tie || near.through_origin || !s.depth_known[hit.ring] {
-        return None;
-    }
-    if near.touch_x.is_finite() {
-        // a point where an edge meets the ray's line at an endpoint: nearer than the hit,
-        // the vertex there decides (if alone); on the hit's edge, nothing here does
-        match orient2d(hit.lo, hit.hi, touch) {
-            Orientation::CounterClockwise => return depth_from_vertex(cx, s, &near, pv, touch),
-            Orientation::Collinear => return None,
-            Orientation::Clockwise => {}
-        }
-    }
-    Some(cx.rings[hit.ring].depth + u32::from(hit.upward))
+    near.depth(cx, s, pv)
 }
 
 /// The depth of ring `b` when the nearest thing the ray from `pv` meets is a vertex W at
@@ -897,6 +890,31 @@ impl Default for Nearest {
 }
 
 impl Nearest {
+    /// The depth of ring `b` from what the ray from its rightmost vertex `pv` met (every
+    /// edge it may meet visited), as [`depth_from_nearest`] decides it.
+    fn depth(&self, cx: &Context, s: &Scratch, pv: Point) -> Option<u32> {
+        let touch = Point::new(self.touch_x, pv.y);
+        let Some(hit) = self.best else {
+            if self.touch_x.is_infinite() {
+                return (!self.through_origin).then_some(0);
+            }
+            return depth_from_vertex(cx, s, self, pv, touch);
+        };
+        if self.tie || self.through_origin || !s.depth_known[hit.ring] {
+            return None;
+        }
+        if self.touch_x.is_finite() {
+            // a point where an edge meets the ray's line at an endpoint: nearer than the
+            // hit, the vertex there decides (if alone); on the hit's edge, nothing does
+            match orient2d(hit.lo, hit.hi, touch) {
+                Orientation::CounterClockwise => return depth_from_vertex(cx, s, self, pv, touch),
+                Orientation::Collinear => return None,
+                Orientation::Clockwise => {}
+            }
+        }
+        Some(cx.rings[hit.ring].depth + u32::from(hit.upward))
+    }
+
     /// Takes the edge starting at `n` into account.
     fn visit(&mut self, cx: &Context, b: usize, pv: Point, n: NodeId) {
         let node = cx.pool.get(n);
@@ -970,6 +988,25 @@ fn winding_number(
     slot: &[u32],
     along: &mut Vec<NodeId>,
 ) -> (i64, Ray) {
+    // the edges of a ring that counts, and those of b's own ring or dead, which do not
+    let counts = |node: &crate::structures::Node| {
+        node.ring as usize != b && !node.removed && cx.rings[node.ring as usize].alive
+    };
+    if let Some(edges) = cx.edge_index.listed() {
+        // every edge, once, against the ray towards +x
+        let mut winding = 0;
+        for &n in edges {
+            let node = cx.pool.get(n);
+            if counts(node) {
+                let step = crossing(node.p, cx.pool.p(node.next), pv);
+                match slot[node.ring as usize] {
+                    NO_SLOT => winding += step,
+                    k => touching[k as usize] += step,
+                }
+            }
+        }
+        return (winding, Ray::East);
+    }
     let grid = &cx.edge_index.grid();
     let (row, column) = (grid.row(pv.y), grid.column(pv.x));
     let (nx, ny) = (grid.columns(), grid.rows());
@@ -996,11 +1033,7 @@ fn winding_number(
             Ray::North => grid.row(p.y.min(next.y)).max(row),
             Ray::South => grid.row(p.y.max(next.y)).min(row),
         };
-        if ring as usize == b
-            || node.removed
-            || !cx.rings[ring as usize].alive
-            || at.is_some_and(|k| k != first)
-        {
+        if !counts(node) || at.is_some_and(|k| k != first) {
             return;
         }
         let step = crossing(ray.turn(p), ray.turn(next), v);
@@ -1332,6 +1365,32 @@ mod tests {
         assert_eq!(got, Ok(vec![Some((0, false)), Some((1, true))]));
     }
 
+    /// The rings each maybe reversed, shuffled (the outer ring anywhere) and all turned by
+    /// the same random number of quarter turns, flattened: the order (input ring k is
+    /// `rings[order[k]]`), the vertices and the ring starts.
+    fn scrambled(
+        rings: &mut [Vec<[f64; 2]>],
+        pick: &mut impl FnMut(u64) -> u64,
+    ) -> (Vec<usize>, Vec<[f64; 2]>, Vec<usize>) {
+        for ring in rings.iter_mut() {
+            if pick(2) == 0 {
+                ring.reverse();
+            }
+        }
+        let mut order: Vec<usize> = (0..rings.len()).collect();
+        for k in (1..order.len()).rev() {
+            order.swap(k, pick(k as u64 + 1) as usize);
+        }
+        let turns = pick(4);
+        let turn = |p: [f64; 2]| (0..turns).fold(p, |[x, y], _| [-y, x]);
+        let shuffled: Vec<Vec<[f64; 2]>> = (order.iter())
+            .map(|&r| rings[r].iter().map(|&p| turn(p)).collect())
+            .collect();
+        let refs: Vec<&[[f64; 2]]> = shuffled.iter().map(Vec::as_slice).collect();
+        let (vertices, starts) = flatten(&refs);
+        (order, vertices, starts)
+    }
+
     /// Holes touching the outer ring, each other and their islands at vertices, in any
     /// order, winding and quarter turn: the depths by construction, whether the rings are
     /// few (counted directly) or many (the grid).
@@ -1362,23 +1421,7 @@ mod tests {
                     want.push(2);
                 }
             }
-            for ring in rings.iter_mut() {
-                if pick(2) == 0 {
-                    ring.reverse();
-                }
-            }
-            // shuffled, the outer ring anywhere
-            let mut order: Vec<usize> = (0..rings.len()).collect();
-            for k in (1..order.len()).rev() {
-                order.swap(k, pick(k as u64 + 1) as usize);
-            }
-            let turns = pick(4);
-            let turn = |p: [f64; 2]| (0..turns).fold(p, |[x, y], _| [-y, x]);
-            let shuffled: Vec<Vec<[f64; 2]>> = (order.iter())
-                .map(|&r| rings[r].iter().map(|&p| turn(p)).collect())
-                .collect();
-            let refs: Vec<&[[f64; 2]]> = shuffled.iter().map(Vec::as_slice).collect();
-            let (vertices, starts) = flatten(&refs);
+            let (order, vertices, starts) = scrambled(&mut rings, &mut pick);
             let (mut cx, mut st) = cleaned(&vertices, &starts, false);
             nest(&mut cx, &mut st.nest, Nesting::Auto).expect("valid");
             // the grid is built only when the depths were not counted directly
@@ -1458,6 +1501,52 @@ mod tests {
             .map(|r| r.depth)
             .collect();
         assert_eq!(depths, [0, 1, 1]);
+    }
+
+    /// Holes lying along the outer ring and along each other (pairs of triangles sharing
+    /// an edge, the first along its cell's lower side, which is the outer ring's in the
+    /// first row), in any order, winding and quarter turn: the depths by construction,
+    /// whether the edges are few (only listed) or many (the grid).
+    #[test]
+    fn rings_lying_along_each_other_nest_listed_and_through_the_grid() {
+        let mut pick = crate::testing::random(0x1157_ed00);
+        let (mut listed, mut grid) = (0, 0);
+        for case in 0..300 {
+            let n = if case % 3 == 2 { 4 } else { 2 };
+            let side = 10.0 * n as f64;
+            let mut rings = vec![vec![[0.0, 0.0], [side, 0.0], [side, side], [0.0, side]]];
+            let mut want = vec![0];
+            for cell in 0..n * n {
+                let (x, y) = ((cell % n) as f64 * 10.0, (cell / n) as f64 * 10.0);
+                if pick(10) < 2 {
+                    continue;
+                }
+                let (a, h) = (2.0 + pick(6) as f64, 2.0 + pick(6) as f64);
+                rings.push(vec![[x, y], [x + 8.0, y], [x + a, y + h]]);
+                want.push(1);
+                if pick(3) > 0 {
+                    rings.push(vec![[x + 8.0, y], [x + a, y + h], [x + 9.0, y + h]]);
+                    want.push(1);
+                }
+            }
+            let (order, vertices, starts) = scrambled(&mut rings, &mut pick);
+            let (mut cx, mut st) = cleaned(&vertices, &starts, false);
+            nest(&mut cx, &mut st.nest, Nesting::Auto).expect("valid");
+            assert!(cx.edge_index.is_current(), "case {case}: the general rule");
+            if cx.edge_index.listed().is_some() {
+                listed += 1;
+            } else {
+                grid += 1;
+            }
+            for ring in cx.rings.iter().filter(|r| r.alive) {
+                let r = ring.input as usize;
+                assert_eq!(ring.depth, want[order[r]], "case {case}, ring {r}");
+            }
+        }
+        assert!(
+            listed > 50 && grid > 50,
+            "{listed} listed, {grid} through the grid"
+        );
     }
 
     #[test]

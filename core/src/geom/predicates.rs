@@ -73,6 +73,16 @@ pub(crate) fn orient2d(a: Point, b: Point, c: Point) -> Orientation {
 #[cold]
 #[inline(never)]
 fn orient2d_exact(a: Point, b: Point, c: Point) -> Orientation {
+    // The usual cases here are exact zeros: repeated points, and points on one horizontal
+    // or vertical line (rings touching, collinear edges). A difference of two floats is
+    // zero only when they are equal, so where a factor of each product is zero both
+    // products, and the determinant, are exactly zero; with a = b the two products are
+    // the same.
+    let left_zero = a.x == c.x || b.y == c.y;
+    let right_zero = a.y == c.y || b.x == c.x;
+    if (left_zero && right_zero) || a == b {
+        return Orientation::Collinear;
+    }
     let det = robust::orient2d(
         robust::Coord { x: a.x, y: a.y },
         robust::Coord { x: b.x, y: b.y },
@@ -186,6 +196,38 @@ mod tests {
             orient2d(p(0., 0.), p(1., 1.), p(2., 2.)),
             Orientation::Collinear
         );
+    }
+
+    /// Points on a small grid, scaled from subnormal to huge, make every kind of exact
+    /// zero the fallback's shortcut takes (repeated points, horizontal and vertical
+    /// lines) and many it must not (one product zero, the other not): the sign is always
+    /// robust's.
+    #[test]
+    fn degenerate_triples_take_robust_signs() {
+        let mut pick = crate::testing::random(0x0de9_e4e7);
+        for scale in [f64::MIN_POSITIVE * 1e-10, 1e-300, 1.0, 3.0, 1e100, 1e150] {
+            for _ in 0..3000 {
+                let mut q = || {
+                    let v = |pick: &mut dyn FnMut(u64) -> u64| (pick(5) as f64 - 2.0) * scale;
+                    p(v(&mut pick), v(&mut pick))
+                };
+                let (a, b, c) = (q(), q(), q());
+                let want = robust::orient2d(
+                    robust::Coord { x: a.x, y: a.y },
+                    robust::Coord { x: b.x, y: b.y },
+                    robust::Coord { x: c.x, y: c.y },
+                );
+                let want = if want > 0.0 {
+                    Orientation::CounterClockwise
+                } else if want < 0.0 {
+                    Orientation::Clockwise
+                } else {
+                    Orientation::Collinear
+                };
+                assert_eq!(orient2d(a, b, c), want, "{a:?} {b:?} {c:?}");
+                assert_eq!(orient2d_exact(a, b, c), want, "{a:?} {b:?} {c:?}");
+            }
+        }
     }
 
     #[test]

@@ -401,6 +401,163 @@ fn polygons_with_holes_agree_and_take_the_stage() {
     assert!(expected > 1000 && taken > 8000, "{expected} {taken}");
 }
 
+/// Holes touching the outer ring and each other at vertices: an n × n grid of 10 × 10
+/// cells in a square whose ring has a vertex at every cell corner on its sides (straight
+/// ones, which the filter drops: the holes touch inside its edges then); in a cell, maybe
+/// a triangular hole from its lower left corner (on the outer ring, or another hole's
+/// corner) through a point inside to its upper right corner, now and then pulled off the
+/// corner, and always where that lies on the outer ring (a hole touching it twice would
+/// cut the polygon in two). So the holes touch in chains, each touching the outer ring
+/// at most once: one polygon, which the stage takes in strict mode. The rings in any order
+/// and winding, in four rotations.
+#[test]
+fn holes_touching_at_vertices_agree_and_take_the_stage() {
+    let mut rng = Rng(0x70c4_5eed);
+    let (mut with64, mut without64) = pair::<f64>();
+    let (mut with32, mut without32) = pair::<f32>();
+    let (mut cases, mut taken) = (0, 0);
+    for case in 0..2000 {
+        let n = 2 + rng.below(2);
+        let side = 10.0 * n as f64;
+        let mut outer = Vec::new();
+        for k in 0..n {
+            outer.push([10.0 * k as f64, 0.0]);
+        }
+        for k in 0..n {
+            outer.push([side, 10.0 * k as f64]);
+        }
+        for k in 0..n {
+            outer.push([side - 10.0 * k as f64, side]);
+        }
+        for k in 0..n {
+            outer.push([0.0, side - 10.0 * k as f64]);
+        }
+        let mut rings = vec![outer];
+        for cell in 0..n * n {
+            if rng.below(10) < 3 {
+                continue;
+            }
+            let (x, y) = ((cell % n) as f64 * 10.0, (cell / n) as f64 * 10.0);
+            let a = 3.0 + rng.below(5) as f64;
+            // (on the outer ring, the hole would touch it twice, and cut the polygon)
+            let end = if x + 10.0 == side || y + 10.0 == side || rng.below(3) == 0 {
+                [x + 9.5, y + 9.75]
+            } else {
+                [x + 10.0, y + 10.0]
+            };
+            rings.push(vec![[x, y], [x + 9.0, y + a], end]);
+        }
+        if rings.len() == 1 {
+            continue;
+        }
+        for ring in rings.iter_mut() {
+            if rng.below(2) == 0 {
+                ring.reverse();
+            }
+        }
+        // the outer ring first for `FirstIsOuter`, anywhere for `Auto`
+        let turn = rng.below(4);
+        let k = rng.below(rings.len());
+        for (nesting, first) in [(Nesting::FirstIsOuter, 0), (Nesting::Auto, k)] {
+            let mut order = rings.clone();
+            order.swap(0, first);
+            let mut vertices = Vec::new();
+            let mut starts = Vec::new();
+            for r in &order {
+                starts.push(vertices.len());
+                vertices.extend(r.iter().map(|&[x, y]| match turn {
+                    0 => [x, y],
+                    1 => [-y, x],
+                    2 => [-x, -y],
+                    _ => [y, -x],
+                }));
+            }
+            let tag = format!("touching {case}");
+            let (_, took) = compare_rings(
+                &mut with64,
+                &mut without64,
+                &vertices,
+                &starts,
+                nesting,
+                &tag,
+            );
+            let v32: Vec<[f32; 2]> = (vertices.iter())
+                .map(|p| [p[0] as f32, p[1] as f32])
+                .collect();
+            compare_rings(&mut with32, &mut without32, &v32, &starts, nesting, &tag);
+            // (the stage holds up to eight rings)
+            if rings.len() <= 8 {
+                cases += 1;
+                taken += usize::from(took > 0);
+            }
+        }
+    }
+    assert!(
+        cases > 2000 && taken == cases,
+        "the stage took {taken} of {cases}"
+    );
+}
+
+/// Touches the stage must take or leave exactly as the pipeline does: a hole crossing
+/// its outer ring at two shared vertices (partly outside it: strict mode refuses it); two
+/// holes touching at the rightmost vertex of both (the hole they make is bridged from
+/// its clockwise visit there); a hole running along its outer ring's edge from a shared
+/// vertex; each in every quarter turn and winding, both nesting conventions.
+#[test]
+fn touches_decided_as_the_pipeline_decides() {
+    let square = vec![[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]];
+    type Rings = Vec<Vec<[f64; 2]>>;
+    let cases: [(&str, Rings, bool); 3] = [
+        (
+            "crossing",
+            vec![
+                square.clone(),
+                vec![[5.0, 5.0], [0.0, 0.0], [5.0, -2.0], [10.0, 0.0]],
+            ],
+            false,
+        ),
+        (
+            "bow tie",
+            vec![
+                square.clone(),
+                vec![[7.0, 5.0], [2.0, 6.0], [2.0, 8.0]],
+                vec![[7.0, 5.0], [2.0, 2.0], [2.0, 4.0]],
+            ],
+            true,
+        ),
+        (
+            "along",
+            vec![square.clone(), vec![[0.0, 0.0], [4.0, 0.0], [2.0, 3.0]]],
+            false,
+        ),
+    ];
+    let (mut with, mut without) = pair::<f64>();
+    for (name, rings, takes) in cases {
+        for turn in 0..4 {
+            for flip in 0..4 {
+                let mut vertices = Vec::new();
+                let mut starts = Vec::new();
+                for (r, ring) in rings.iter().enumerate() {
+                    starts.push(vertices.len());
+                    let mut ring: Vec<[f64; 2]> = (ring.iter())
+                        .map(|&[x, y]| (0..turn).fold([x, y], |[x, y], _| [-y, x]))
+                        .collect();
+                    if flip >> (r % 2) & 1 == 1 {
+                        ring.reverse();
+                    }
+                    vertices.extend(ring);
+                }
+                for nesting in [Nesting::FirstIsOuter, Nesting::Auto] {
+                    let tag = format!("{name}, turn {turn}, flip {flip}");
+                    let (_, took) =
+                        compare_rings(&mut with, &mut without, &vertices, &starts, nesting, &tag);
+                    assert_eq!(took > 0, takes, "{tag}");
+                }
+            }
+        }
+    }
+}
+
 /// Every polygon of up to 140 vertices of the glyph datasets, earcut's fixtures and the
 /// named corpus cases (bridging's special cases among them), in four rotations: the stage gives what the pipeline gives, and takes every glyph with
 /// holes that fits it.

@@ -182,3 +182,68 @@ impl LeastAngle {
         self.best
     }
 }
+
+/// Rotating clockwise around `o` from the direction towards `back`: whether the direction
+/// towards `u` comes strictly before the direction towards `w`. An edge straight back comes
+/// first: with the arriving edge it forms a zero-width wall (a hole sharing an edge with its
+/// outer ring, say), enclosing nothing, which becomes a ring of its own and vanishes.
+pub(crate) fn clockwise_before(o: Point, back: Point, u: Point, w: Point) -> bool {
+    let (ru, rw) = (rank(o, back, u), rank(o, back, w));
+    if ru != rw {
+        return ru < rw;
+    }
+    // same half-plane: u first when w lies clockwise of it
+    (ru == 1 || ru == 3) && orient2d(o, u, w) == Orientation::Clockwise
+}
+
+/// Where the direction towards `q` lies, seen clockwise from the direction towards `back`:
+/// 0 along it, 1 right of it, 2 straight opposite, 3 left of it.
+fn rank(o: Point, back: Point, q: Point) -> u8 {
+    match orient2d(o, back, q) {
+        Orientation::Collinear if same_ray(o, back, q) => 0,
+        Orientation::Clockwise => 1,
+        Orientation::Collinear => 2,
+        Orientation::CounterClockwise => 3,
+    }
+}
+
+/// A ring's rightmost-lowest visit, as `touch` reads a traced ring's role there: of the
+/// visits at the rightmost-lowest position, the first, or the first turning clockwise (a
+/// hole's M: the ray leaves from its corner); whether that one turns clockwise (a hole),
+/// whether any visit there turns, and whether the whole ring is straight (a wall).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct RightmostVisit<N> {
+    pub node: N,
+    p: Point,
+    pub hole: bool,
+    pub turns: bool,
+    pub flat: bool,
+}
+
+impl<N: Copy> RightmostVisit<N> {
+    /// Before the first visit, which is `node` at `p`.
+    pub(crate) fn new(node: N, p: Point) -> Self {
+        RightmostVisit {
+            node,
+            p,
+            hole: false,
+            turns: false,
+            flat: true,
+        }
+    }
+
+    /// The ring visits `node` at `p`, turning `turn` there.
+    pub(crate) fn visit(&mut self, node: N, p: Point, turn: Orientation) {
+        self.flat &= turn == Orientation::Collinear;
+        let cw = turn == Orientation::Clockwise;
+        if p.x > self.p.x || (p.x == self.p.x && p.y < self.p.y) {
+            (self.node, self.p) = (node, p);
+            (self.hole, self.turns) = (cw, turn != Orientation::Collinear);
+        } else if p == self.p {
+            self.turns |= turn != Orientation::Collinear;
+            if cw && !self.hole {
+                (self.node, self.hole) = (node, true);
+            }
+        }
+    }
+}

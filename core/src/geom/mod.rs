@@ -10,7 +10,9 @@ mod predicates;
 mod segments;
 
 pub use coord::Coord;
-pub(crate) use corners::{corner_contains, on_ray, same_ray, LeastAngle};
+pub(crate) use corners::{
+    clockwise_before, corner_contains, on_ray, same_ray, LeastAngle, RightmostVisit,
+};
 pub(crate) use ears::{bounds, interferes, near};
 pub(crate) use exact::{in_range, SnapGrid};
 pub(crate) use predicates::*;

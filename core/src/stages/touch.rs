@@ -16,7 +16,7 @@
 //! read at its rightmost-lowest position: a hole's boundary turns clockwise there at one
 //! of its visits, an outer boundary never does.
 
-use crate::geom::same_ray;
+use crate::geom::{clockwise_before, RightmostVisit};
 use crate::structures::NodeId;
 use core::cmp::Ordering;
 
@@ -512,30 +512,6 @@ fn is_crack(cx: &mut Context, s: &mut Scratch, i: usize, j: usize) -> bool {
     crack
 }
 
-/// Rotating clockwise around `o` from the direction towards `back`: whether the direction
-/// towards `u` comes strictly before the direction towards `w`. An edge straight back comes
-/// first: with the arriving edge it forms a zero-width wall (a hole sharing an edge with its
-/// outer ring, say), enclosing nothing, which becomes a ring of its own and vanishes.
-fn clockwise_before(o: Point, back: Point, u: Point, w: Point) -> bool {
-    let (ru, rw) = (rank(o, back, u), rank(o, back, w));
-    if ru != rw {
-        return ru < rw;
-    }
-    // same half-plane: u first when w lies clockwise of it
-    (ru == 1 || ru == 3) && orient2d(o, u, w) == Orientation::Clockwise
-}
-
-/// Where the direction towards `q` lies, seen clockwise from the direction towards `back`:
-/// 0 along it, 1 right of it, 2 straight opposite, 3 left of it.
-fn rank(o: Point, back: Point, q: Point) -> u8 {
-    match orient2d(o, back, q) {
-        Orientation::Collinear if same_ray(o, back, q) => 0,
-        Orientation::Clockwise => 1,
-        Orientation::Collinear => 2,
-        Orientation::CounterClockwise => 3,
-    }
-}
-
 /// Traces the rings again after re-linking: each cycle becomes a ring of its own, an outer
 /// boundary (depth 0) or a hole (depth 1). The old ring entries stay, dead, for reporting.
 fn retrace(cx: &mut Context, s: &mut Scratch) {
@@ -549,34 +525,27 @@ fn retrace(cx: &mut Context, s: &mut Scratch) {
         }
         let index = cx.rings.len() as u32;
         let input = cx.rings[ring].input;
-        let (mut len, mut rightmost, mut hole) = (0, n, false);
+        let mut len = 0;
         let mut area = 0.0;
-        let mut flat = true;
-        // whether some visit at the rightmost-lowest position turns
-        let mut turns = false;
+        let mut at = RightmostVisit::new(n, cx.pool.p(n));
         let mut m = n;
         loop {
             cx.pool.get_mut(m).ring = index;
             len += 1;
             area += approx_cross(cx.pool.p(m), cx.pool.p(cx.pool.next(m)));
-            let (p, best) = (cx.pool.p(m), cx.pool.p(rightmost));
-            let t = turn(cx, m);
-            flat &= t == Orientation::Collinear;
-            let cw = t == Orientation::Clockwise;
-            if p.x > best.x || (p.x == best.x && p.y < best.y) {
-                (rightmost, hole, turns) = (m, cw, t != Orientation::Collinear);
-            } else if p == best {
-                turns |= t != Orientation::Collinear;
-                if cw && !hole {
-                    // a clockwise visit is the hole's M: the ray leaves from its corner
-                    (rightmost, hole) = (m, true);
-                }
-            }
+            at.visit(m, cx.pool.p(m), turn(cx, m));
             m = cx.pool.next(m);
             if m == n {
                 break;
             }
         }
+        let RightmostVisit {
+            node: rightmost,
+            mut hole,
+            turns,
+            flat,
+            ..
+        } = at;
         if !turns && !flat {
             // Every visit there is the tip of a wall the ring runs out along and back
             // (joining rings leaves such walls where a hole cancelled a lobe): decide on

@@ -18,7 +18,11 @@ use crate::Nesting;
 pub(super) fn nest<const N: usize, M: Mask>(s: &mut Scratch<N, M>, nesting: Nesting) -> bool {
     let mut outer = None;
     for b in 0..s.rings {
-        let q = s.p[usize::from(s.start[b])];
+        // (a vertex where no other ring touches: it lies on no other ring)
+        let Some(v) = s.ring(b).find(|&v| s.touched & bit(v) == M::NONE) else {
+            return false;
+        };
+        let q = s.p[v];
         let depth = (0..s.rings).filter(|&r| r != b && inside(s, r, q)).count();
         match depth {
             0 if outer.is_none() => outer = Some(b),

@@ -11,13 +11,17 @@
 //!
 //! 1. **Load** the vertices, widened to `f64` (exact), each ring linked by one-byte indices.
 //! 2. **Filter** repeated and straight vertices exactly as `clean` does, in its order.
-//! 3. **Prove** that no two edges meet, other than neighbours at their shared vertex:
-//!    every pair whose boxes overlap is decided by exact signs (a lone ring star-shaped
-//!    from its vertices' mean first passes an O(n) certificate).
+//! 3. **Prove** that no two edges meet, other than neighbours at their shared vertex and
+//!    rings touching at a vertex (`touch`): every pair whose boxes overlap is decided by
+//!    exact signs (a lone ring star-shaped from its vertices' mean first passes an O(n)
+//!    certificate). Where a vertex lies inside another ring's edge, the edge is split
+//!    there; both nodes at a touch take the lower vertex index.
 //! 4. **Orient** every ring counter-clockwise by the turn at its rightmost-lowest vertex.
 //! 5. **Nest** (`holes`): one ring must contain all the others, and none of those another
-//!    (by exact crossing parity); the holes are turned clockwise.
-//! 6. **Bridge** (`holes`) every hole to the ring around it as `bridge` does: by
+//!    (by exact crossing parity at a vertex no other ring touches); the holes are turned
+//!    clockwise; rings must not cross where they touch.
+//! 6. **Join and bridge**: rings touching are joined as `touch` joins them (`touch`), and
+//!    every hole left is bridged (`holes`) to the ring around it as `bridge` does: by
 //!    descending rightmost x, the ray's nearest hit, the same visible vertex, the same two
 //!    copies.
 //! 7. **Clip** with the strategy's walk (`walk`): the fast one with the same start, the
@@ -28,9 +32,11 @@
 //!
 //! Whatever the pipeline would treat specially makes the stage give up (`false`) before
 //! writing anything the pipeline would not: non-finite coordinates, a spike or a ring
-//! left with fewer than three vertices, two edges meeting (a crossing, a touch, a
-//! repeated position), rings nested otherwise, a bridge target the pipeline would choose
-//! by a fallback, a clockwise last triangle or a ring the walk cannot finish. The
+//! left with fewer than three vertices, two edges meeting otherwise than rings touching
+//! at a vertex (a crossing, a ring touching itself, edges along each other, three nodes
+//! at one position), touching rings in lenient mode or making several polygons, rings
+//! nested otherwise, a bridge target the pipeline would choose by a fallback, a
+//! clockwise last triangle or a ring the walk cannot finish. The
 //! triangulator then runs the pipeline from the start, which finds and reports the same
 //! things as without this stage. `core/tests/small.rs` holds the two to the same output.
 
@@ -42,6 +48,7 @@ use crate::report::{DropReason, Dropped};
 use crate::Nesting;
 
 mod holes;
+mod touch;
 mod walk;
 
 pub(crate) use walk::clip_ring;
@@ -155,7 +162,19 @@ pub(crate) struct Scratch<const N: usize, M> {
     fresh: M,
     /// Twice the polygon's area as lenient mode sums it (see [`double_area`]).
     area: f64,
+    /// Where two rings touch at a vertex: the two nodes there (see [`touch`]), how many
+    /// such positions, and all their nodes.
+    touch: [[u8; 2]; TOUCHES],
+    touches: usize,
+    touched: M,
+    /// Vertices found inside another ring's edge: the edge (its start node) and the
+    /// vertex, until [`touch::split`] splits the edge there (a touch then).
+    tee: [[u8; 2]; TOUCHES],
+    tees: usize,
 }
+
+/// The most positions where rings touch that the stage takes.
+const TOUCHES: usize = 16;
 
 impl<const N: usize, M: Mask> Default for Scratch<N, M> {
     fn default() -> Self {
@@ -177,6 +196,11 @@ impl<const N: usize, M: Mask> Default for Scratch<N, M> {
             reversed: M::NONE,
             fresh: M::NONE,
             area: 0.0,
+            touch: [[0; 2]; TOUCHES],
+            touches: 0,
+            touched: M::NONE,
+            tee: [[0; 2]; TOUCHES],
+            tees: 0,
         }
     }
 }
@@ -269,6 +293,7 @@ pub(crate) fn check<T: Coord, const N: usize, M: Mask>(
     s.rings = ring_starts.len();
     s.nodes = n;
     (s.left, s.reversed, s.fresh) = (M::NONE, M::NONE, M::NONE);
+    (s.touches, s.touched, s.tees) = (0, M::NONE, 0);
     for r in 0..s.rings {
         let (f, e) = (ring_starts[r], ring_starts.get(r + 1).copied().unwrap_or(n));
         (s.first[r], s.first[r + 1]) = (f as u8, e as u8);
@@ -285,11 +310,17 @@ pub(crate) fn check<T: Coord, const N: usize, M: Mask>(
     if !proved {
         return false;
     }
+    if s.touches > 0 {
+        canonical_vertices(cx, s);
+    }
+    if s.tees > 0 && !touch::split(s) {
+        return false;
+    }
     for r in 0..s.rings {
         orient(s, r);
     }
     s.outer = 0;
-    s.rings == 1 || holes::nest(s, nesting)
+    (s.rings == 1 || holes::nest(s, nesting)) && (0..s.touches).all(|t| touch::proper(s, t))
 }
 
 /// Step 2 for ring `r`, `clean`'s filter (`filter_ring`) move for move: the same vertices
@@ -431,7 +462,8 @@ fn apart<const N: usize, M: Mask>(s: &mut Scratch<N, M>) -> bool {
             for m in k + 1..edges {
                 let [u0, u1, w0, w1] = s.boxes[m];
                 let overlap = u0 <= x1 && x0 <= u1 && w0 <= y1 && y0 <= w1;
-                if overlap && m != after && m != before && meet(s, k, m) {
+                if overlap && m != after && m != before && meet(s, k, m) && !touch::record(s, k, m)
+                {
                     return false;
                 }
             }
@@ -456,7 +488,7 @@ fn apart<const N: usize, M: Mask>(s: &mut Scratch<N, M>) -> bool {
                 break;
             }
             let overlap = w0 <= y1 && y0 <= w1;
-            if overlap && m != after && m != before && meet(s, k, m) {
+            if overlap && m != after && m != before && meet(s, k, m) && !touch::record(s, k, m) {
                 return false;
             }
         }
@@ -467,6 +499,27 @@ fn apart<const N: usize, M: Mask>(s: &mut Scratch<N, M>) -> bool {
 /// Up to this many edges, [`apart`] compares every pair of boxes; more, it sorts them
 /// first (measured: even at 33–64 edges, faster beyond).
 const PAIRS_MAX: usize = 48;
+
+/// Where rings touch, `clean`'s canonical vertices: both nodes at a position take the
+/// lower vertex index, and the other one is reported (`Coincident`), by position.
+fn canonical_vertices<const N: usize, M: Mask>(cx: &mut Context, s: &mut Scratch<N, M>) {
+    touch::sort_by_position(s);
+    for t in 0..s.touches {
+        let [a, b] = s.touch[t].map(usize::from);
+        let (keep, other) = if s.vertex[a] < s.vertex[b] {
+            (a, b)
+        } else {
+            (b, a)
+        };
+        let ring = (0..s.rings).rfind(|&r| usize::from(s.first[r]) <= other);
+        cx.dropped.push(Dropped {
+            vertex: u32::from(s.vertex[other]),
+            ring: ring.unwrap_or(0) as u32,
+            reason: DropReason::Coincident,
+        });
+        s.vertex[other] = s.vertex[keep];
+    }
+}
 
 /// Step 4 for ring `r`, as `clean` orients a ring: the turn at the rightmost-lowest vertex
 /// (there is one: no two vertices share a position) says whether the ring runs
@@ -520,6 +573,11 @@ pub(crate) fn clip<const N: usize, M: Mask>(
     lenient: bool,
     out: &mut Vec<[u32; 3]>,
 ) -> bool {
+    if s.touches > 0 && (lenient || !touch::join(s)) {
+        // (lenient mode cuts rings into lobes first, and its repairs were tuned on
+        // them: the pipeline's)
+        return false;
+    }
     if lenient {
         s.area = 0.0;
         for r in 0..s.rings {

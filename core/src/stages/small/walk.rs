@@ -242,8 +242,9 @@ impl<const N: usize, M: Mask> Walk<'_, N, M> {
             self.p(c),
             self.p(self.next(c)),
         );
-        // (one ring's positions are all distinct: only bridges repeat some)
-        let repeats = self.s.rings > 1 && (pa == pc || pp == pc || pc == pn || pa == pn);
+        // (one ring's positions are all distinct: only bridges and touches repeat some)
+        let repeats = (self.s.rings > 1 || self.s.touches > 0)
+            && (pa == pc || pp == pc || pc == pn || pa == pn);
         if repeats || self.len <= 2 {
             return None;
         }

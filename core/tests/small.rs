@@ -502,12 +502,15 @@ fn holes_touching_at_vertices_agree_and_take_the_stage() {
 /// its outer ring at two shared vertices (partly outside it: strict mode refuses it); two
 /// holes touching at the rightmost vertex of both (the hole they make is bridged from
 /// its clockwise visit there); a hole running along its outer ring's edge from a shared
-/// vertex; each in every quarter turn and winding, both nesting conventions.
+/// vertex; a ring touching itself: pinched into two polygons, crossing itself round a
+/// lobe turning the same way (refused), or round a hole (once at the hole's rightmost
+/// vertex, where the face walk keeps it one boundary); a hole touching its outer ring
+/// twice, which cuts it in two polygons. Each in every quarter turn and winding, both nesting conventions.
 #[test]
 fn touches_decided_as_the_pipeline_decides() {
     let square = vec![[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]];
     type Rings = Vec<Vec<[f64; 2]>>;
-    let cases: [(&str, Rings, bool); 3] = [
+    let cases: [(&str, Rings, bool); 8] = [
         (
             "crossing",
             vec![
@@ -529,6 +532,75 @@ fn touches_decided_as_the_pipeline_decides() {
             "along",
             vec![square.clone(), vec![[0.0, 0.0], [4.0, 0.0], [2.0, 3.0]]],
             false,
+        ),
+        (
+            "pinched into two polygons",
+            vec![vec![
+                [0.0, 0.0],
+                [4.0, 0.0],
+                [2.0, 2.0],
+                [4.0, 4.0],
+                [0.0, 4.0],
+                [2.0, 2.0],
+            ]],
+            true,
+        ),
+        (
+            "crossing itself round a lobe",
+            vec![vec![
+                [0.0, 0.0],
+                [5.0, 0.0],
+                [7.0, 3.0],
+                [3.0, 3.0],
+                [5.0, 0.0],
+                [10.0, 0.0],
+                [10.0, 10.0],
+                [0.0, 10.0],
+            ]],
+            false,
+        ),
+        (
+            "pinched round its hole",
+            vec![vec![
+                [0.0, 0.0],
+                [5.0, 0.0],
+                [3.0, 3.0],
+                [7.0, 3.0],
+                [5.0, 0.0],
+                [10.0, 0.0],
+                [10.0, 10.0],
+                [0.0, 10.0],
+            ]],
+            true,
+        ),
+        (
+            "pinched round its hole at the hole's rightmost vertex",
+            vec![vec![
+                [0.0, 0.0],
+                [5.0, 0.0],
+                [2.0, 1.0],
+                [2.0, 3.0],
+                [5.0, 0.0],
+                [10.0, 0.0],
+                [10.0, 10.0],
+                [0.0, 10.0],
+            ]],
+            true,
+        ),
+        (
+            "cut in two by a hole",
+            vec![
+                vec![
+                    [0.0, 0.0],
+                    [5.0, 0.0],
+                    [10.0, 0.0],
+                    [10.0, 10.0],
+                    [5.0, 10.0],
+                    [0.0, 10.0],
+                ],
+                vec![[5.0, 0.0], [6.0, 5.0], [5.0, 10.0], [4.0, 5.0]],
+            ],
+            true,
         ),
     ];
     let (mut with, mut without) = pair::<f64>();

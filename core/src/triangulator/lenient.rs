@@ -123,14 +123,14 @@ pub(crate) fn triangulate<T: Coord>(
         )
     {
         // valid input: a lenient run is measured all the same, as the pipeline's is
-        let (holes, area) = st.small.holes_and_area();
+        let (polygons, holes, area) = st.small.counts_and_area();
         let deviation = if options.lenient {
             deviation(area, vertices, out)
         } else {
             0.0
         };
         return Ok(Outcome {
-            polygons: 1,
+            polygons,
             holes,
             deviation,
         });

@@ -43,18 +43,22 @@ pub(crate) struct Small {
 }
 
 impl Small {
-    /// The number of holes and twice the area (as lenient mode measures it) of the polygon
-    /// the stage took last.
-    pub(crate) fn holes_and_area(&self) -> (usize, f64) {
+    /// The numbers of polygons and holes, and twice the area (as lenient mode measures
+    /// it), of the input the stage took last.
+    pub(crate) fn counts_and_area(&self) -> (usize, usize, f64) {
         if self.used_wide {
+            let s = &self.wide;
             (
-                small::hole_count(&self.wide),
-                small::double_area(&self.wide),
+                small::polygon_count(s),
+                small::hole_count(s),
+                small::double_area(s),
             )
         } else {
+            let s = &self.narrow;
             (
-                small::hole_count(&self.narrow),
-                small::double_area(&self.narrow),
+                small::polygon_count(s),
+                small::hole_count(s),
+                small::double_area(s),
             )
         }
     }

@@ -41,6 +41,7 @@ pub(super) fn nest<const N: usize, M: Mask>(s: &mut Scratch<N, M>, nesting: Nest
     s.outer = outer;
     for r in (0..s.rings).filter(|&r| r != outer) {
         reverse(s, r);
+        s.hole_rings |= 1 << r;
     }
     true
 }
@@ -54,7 +55,8 @@ fn inside<const N: usize, M: Mask>(s: &Scratch<N, M>, r: usize, q: Point) -> boo
     winding != 0
 }
 
-/// Step 6: merges every hole into the outer ring, in `bridge`'s order (descending
+/// Step 6: merges every hole into the ring around it (the outer ring, or one of the
+/// polygons touching rings make), in `bridge`'s order (descending
 /// rightmost x, then lower y, then ring number), each through a two-way bridge from its
 /// rightmost vertex M to the node `bridge` connects it to. The bridge's two new nodes
 /// follow the others, the copy of the target first, as the pool numbers them. `false`
@@ -62,9 +64,14 @@ fn inside<const N: usize, M: Mask>(s: &Scratch<N, M>, r: usize, q: Point) -> boo
 pub(super) fn bridge<const N: usize, M: Mask>(s: &mut Scratch<N, M>) -> bool {
     let mut order = [0u8; RINGS];
     let mut holes = 0;
-    for r in (0..s.rings).filter(|&r| r != s.outer) {
-        order[holes] = r as u8;
-        holes += 1;
+    let mut merged = M::NONE;
+    for r in 0..s.rings {
+        if s.hole_rings & 1 << r == 0 {
+            merged |= ring_mask(s, r);
+        } else {
+            order[holes] = r as u8;
+            holes += 1;
+        }
     }
     let key = |s: &Scratch<N, M>, r: u8| s.p[usize::from(s.rightmost[usize::from(r)])];
     let order = &mut order[..holes];
@@ -84,7 +91,6 @@ pub(super) fn bridge<const N: usize, M: Mask>(s: &mut Scratch<N, M>) -> bool {
             j -= 1;
         }
     }
-    let mut merged = ring_mask(s, s.outer);
     for &hole in order.iter() {
         let hole = usize::from(hole);
         let m = usize::from(s.rightmost[hole]);

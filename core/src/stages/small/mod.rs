@@ -145,8 +145,11 @@ pub(crate) struct Scratch<const N: usize, M> {
     start: [u8; RINGS],
     len: [u8; RINGS],
     rightmost: [u8; RINGS],
-    /// The ring containing the others.
+    /// The ring containing the others (before joining touching rings).
     outer: usize,
+    /// The rings that are holes, one bit each (every ring but `outer`, until joining
+    /// touching rings makes them cycles of either kind; the others are polygons).
+    hole_rings: u8,
     /// The edges' boxes for the proof, ring after ring, each in ring order from its start:
     /// x0, x1, y0, y1.
     boxes: [[f64; 4]; N],
@@ -171,6 +174,8 @@ pub(crate) struct Scratch<const N: usize, M> {
     /// vertex, until [`touch::split`] splits the edge there (a touch then).
     tee: [[u8; 2]; TOUCHES],
     tees: usize,
+    /// The edge (start node) each split node splits, by its place after the input's.
+    split_of: [u8; TOUCHES],
 }
 
 /// The most positions where rings touch that the stage takes.
@@ -190,6 +195,7 @@ impl<const N: usize, M: Mask> Default for Scratch<N, M> {
             len: [0; RINGS],
             rightmost: [0; RINGS],
             outer: 0,
+            hole_rings: 0,
             boxes: [[0.0; 4]; N],
             from: [0; N],
             left: M::NONE,
@@ -201,6 +207,7 @@ impl<const N: usize, M: Mask> Default for Scratch<N, M> {
             touched: M::NONE,
             tee: [[0; 2]; TOUCHES],
             tees: 0,
+            split_of: [0; TOUCHES],
         }
     }
 }
@@ -317,9 +324,11 @@ pub(crate) fn check<T: Coord, const N: usize, M: Mask>(
         return false;
     }
     for r in 0..s.rings {
-        orient(s, r);
+        if !orient(s, r) {
+            return false;
+        }
     }
-    s.outer = 0;
+    (s.outer, s.hole_rings) = (0, 0);
     (s.rings == 1 || holes::nest(s, nesting)) && (0..s.touches).all(|t| touch::proper(s, t))
 }
 
@@ -522,9 +531,9 @@ fn canonical_vertices<const N: usize, M: Mask>(cx: &mut Context, s: &mut Scratch
 }
 
 /// Step 4 for ring `r`, as `clean` orients a ring: the turn at the rightmost-lowest vertex
-/// (there is one: no two vertices share a position) says whether the ring runs
-/// clockwise; then every link is reversed.
-fn orient<const N: usize, M: Mask>(s: &mut Scratch<N, M>, r: usize) {
+/// says whether the ring runs clockwise; then every link is reversed. False where the
+/// ring touches itself there (`clean` then reads the edges there).
+fn orient<const N: usize, M: Mask>(s: &mut Scratch<N, M>, r: usize) -> bool {
     let start = usize::from(s.start[r]);
     let mut best = start;
     for v in s.ring(r) {
@@ -534,10 +543,16 @@ fn orient<const N: usize, M: Mask>(s: &mut Scratch<N, M>, r: usize) {
         }
     }
     s.rightmost[r] = best as u8;
+    // (where the ring touches itself there, `clean` orients it by the edges there: the
+    // pipeline's)
+    if s.touched & bit(best) != M::NONE && touch::touches_own_ring(s, best) {
+        return false;
+    }
     // (its turn, as the filter took it)
     if s.left & bit(best) == M::NONE {
         reverse(s, r);
     }
+    true
 }
 
 /// Reverses ring `r`'s links.
@@ -553,7 +568,13 @@ fn reverse<const N: usize, M: Mask>(s: &mut Scratch<N, M>, r: usize) {
 
 /// The number of holes of the polygon checked last.
 pub(crate) fn hole_count<const N: usize, M: Mask>(s: &Scratch<N, M>) -> usize {
-    s.rings - 1
+    s.hole_rings.count_ones() as usize
+}
+
+/// The number of polygons of the input clipped last: one, or several where touching rings
+/// cut it into pieces.
+pub(crate) fn polygon_count<const N: usize, M: Mask>(s: &Scratch<N, M>) -> usize {
+    s.rings - hole_count(s)
 }
 
 /// Twice the polygon's area as lenient mode sums it (outer ring minus holes, each by the
@@ -588,7 +609,7 @@ pub(crate) fn clip<const N: usize, M: Mask>(
             s.area += if r == s.outer { sum.abs() } else { -sum.abs() };
         }
     }
-    if s.rings > 1 && !holes::bridge(s) {
+    if s.hole_rings != 0 && !holes::bridge(s) {
         return false;
     }
     clip_ring(s, quality, lenient, out)

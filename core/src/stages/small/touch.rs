@@ -4,22 +4,24 @@
 //!
 //! - The proof ([`record`]) lets two edges of different rings meet where they share an
 //!   endpoint and nowhere else (on one line, only leaving it in opposite directions), and
-//!   lists the two nodes there; anything else that meets (a vertex inside an edge, edges
-//!   along each other, a ring touching itself, a third node at the position) hands the
-//!   polygon back.
+//!   lists the two nodes there; a vertex inside another edge (of any ring) splits it there
+//!   as `clean` does ([`split`]). Anything else that meets (edges along each other, a
+//!   third node at the position) hands the polygon back.
 //! - Both nodes then take the lower vertex index (`super::canonical_vertices`), and strict
 //!   mode checks that the rings do not cross there ([`proper`], `nest`'s check of shared
 //!   positions).
 //! - Before bridging, [`join`] re-links each position by the face-walk rule (`touch`'s
 //!   `relink`) and traces the rings again as `touch` does: a hole touching the outer ring
-//!   becomes part of it, two touching holes one hole, each ring starting at its lowest
-//!   node. Whatever `touch` would decide by a rule this does not repeat (a conflict, a
-//!   wall, a ring split into several polygons) hands the polygon back.
+//!   becomes part of it, two touching holes one hole, a ring touching itself two (lobes,
+//!   or a polygon and its hole), a hole touching the outer ring twice cuts it in two
+//!   polygons; each ring starts at its lowest node. Whatever `touch` would decide by a
+//!   rule this does not repeat (a conflict, a wall, a ring wound twice) hands the polygon
+//!   back.
 
 use super::{bit, Mask, Scratch, RINGS, TOUCHES};
 use crate::geom::{
-    clockwise_before, cmp_around, cmp_xy, orient2d, same_ray, within_box, Orientation,
-    RightmostVisit,
+    clockwise_before, cmp_around, cmp_xy, orient2d, ray_crossing, same_ray, within_box,
+    Orientation, Point, RightmostVisit,
 };
 
 /// The proof found edges `k` and `m` (indices into `s.boxes`) meeting: whether only at an
@@ -53,9 +55,6 @@ pub(super) fn record<const N: usize, M: Mask>(s: &mut Scratch<N, M>, k: usize, m
     if orient2d(o, a, b) == Orientation::Collinear && same_ray(o, a, b) {
         return false;
     }
-    if ring(s, x) == ring(s, y) {
-        return false; // a ring touching itself
-    }
     let pair = [x.min(y) as u8, x.max(y) as u8];
     if s.touch[..s.touches].contains(&pair) {
         return true;
@@ -77,6 +76,29 @@ fn ring<const N: usize, M: Mask>(s: &Scratch<N, M>, v: usize) -> usize {
         .unwrap_or(0)
 }
 
+/// The input ring of node `v`: an input node's, or for a node splitting an edge, the
+/// edge's.
+fn ring_of<const N: usize, M: Mask>(s: &Scratch<N, M>, v: usize) -> usize {
+    let n = usize::from(s.first[s.rings]);
+    match v.checked_sub(n) {
+        Some(k) if k < TOUCHES => ring(s, usize::from(s.split_of[k])),
+        _ => ring(s, v),
+    }
+}
+
+/// The other node at touched node `v`'s position.
+fn partner<const N: usize, M: Mask>(s: &Scratch<N, M>, v: usize) -> Option<usize> {
+    s.touch[..s.touches].iter().find_map(|&[a, b]| {
+        let (a, b) = (usize::from(a), usize::from(b));
+        (a == v).then_some(b).or((b == v).then_some(a))
+    })
+}
+
+/// Whether touched node `v`'s position is another visit of its own ring.
+pub(super) fn touches_own_ring<const N: usize, M: Mask>(s: &Scratch<N, M>, v: usize) -> bool {
+    partner(s, v).is_some_and(|w| ring_of(s, w) == ring_of(s, v))
+}
+
 /// [`record`] where edges e and f (by start node) share no endpoint: `None` when no
 /// endpoint of f lies inside e; else whether it may (f leaving e's line there, on another
 /// ring), and then it is listed (once) for [`split`].
@@ -88,8 +110,8 @@ fn tee<const N: usize, M: Mask>(s: &mut Scratch<N, M>, e: usize, f: usize) -> Op
             continue;
         }
         // (q is no endpoint of e: they share none)
-        if orient2d(a, b, s.p[other]) == Orientation::Collinear || ring(s, e) == ring(s, y) {
-            return Some(false); // along e, or a ring touching itself
+        if orient2d(a, b, s.p[other]) == Orientation::Collinear {
+            return Some(false); // along e
         }
         let listed = [e as u8, y as u8];
         if s.tee[..s.tees].contains(&listed) {
@@ -142,6 +164,7 @@ pub(super) fn split<const N: usize, M: Mask>(s: &mut Scratch<N, M>) -> bool {
                 (new as u8, after as u8, next as u8, new as u8);
             after = new;
             s.len[ring(s, e)] += 1;
+            s.split_of[new - usize::from(s.first[s.rings])] = e as u8;
             s.touch[s.touches] = [y as u8, new as u8];
             s.touches += 1;
             s.touched |= bit::<M>(new);
@@ -190,9 +213,8 @@ pub(super) fn proper<const N: usize, M: Mask>(s: &Scratch<N, M>, t: usize) -> bo
 
 /// Step 6a: re-links every touch by the face-walk rule and traces the rings again
 /// (`touch::join`), leaving the ring table as the pipeline's: the rings by their lowest
-/// node, each starting there, its rightmost node and whether it is a hole, one outer
-/// ring. False where `touch` would go by another rule, or the rings are no longer one
-/// polygon.
+/// node, each starting there, its rightmost node, and which are holes (the others are
+/// polygons). False where `touch` would go by another rule or refuse the rings.
 pub(super) fn join<const N: usize, M: Mask>(s: &mut Scratch<N, M>) -> bool {
     let live = (0..s.rings).fold(M::NONE, |mask, r| {
         s.ring(r).fold(mask, |mask, v| mask | bit(v))
@@ -226,9 +248,13 @@ pub(super) fn join<const N: usize, M: Mask>(s: &mut Scratch<N, M>) -> bool {
     retrace(s, live)
 }
 
-/// `touch::retrace` on the nodes `live`: each cycle a ring, by its lowest node.
+/// `touch::retrace` on the nodes `live`: each cycle a ring, by its lowest node; then
+/// `touch::refuse_rings_winding_twice`'s check, and `bridge`'s case of a hole touching a
+/// polygon at its rightmost vertex, which this stage does not bridge.
 fn retrace<const N: usize, M: Mask>(s: &mut Scratch<N, M>, mut live: M) -> bool {
-    let (mut rings, mut outer) = (0, None);
+    let mut cycle = [u8::MAX; N];
+    let mut input = [0usize; RINGS];
+    let (mut rings, mut holes) = (0, 0u8);
     while live != M::NONE {
         let n = live.lowest();
         if rings == RINGS {
@@ -239,6 +265,7 @@ fn retrace<const N: usize, M: Mask>(s: &mut Scratch<N, M>, mut live: M) -> bool 
         let mut m = n;
         loop {
             live &= !bit::<M>(m);
+            cycle[m] = rings as u8;
             len += 1;
             at.visit(m, s.p[m], orient2d(s.p[s.prev(m)], s.p[m], s.p[s.next(m)]));
             m = s.next(m);
@@ -253,20 +280,55 @@ fn retrace<const N: usize, M: Mask>(s: &mut Scratch<N, M>, mut live: M) -> bool 
         if at.flat || !at.turns {
             return false;
         }
-        if !at.hole {
-            if outer.is_some() {
-                return false; // several polygons
-            }
-            outer = Some(rings);
+        if at.hole {
+            holes |= 1 << rings;
         }
+        input[rings] = ring_of(s, n);
         s.start[rings] = n as u8;
         s.len[rings] = len as u8;
         s.rightmost[rings] = at.node as u8;
         rings += 1;
     }
-    let Some(outer) = outer else {
+    if holes.count_ones() as usize == rings {
+        return false;
+    }
+    (s.rings, s.hole_rings) = (rings, holes);
+    let kind = |c: usize| holes >> c & 1;
+    for &[a, b] in &s.touch[..s.touches] {
+        let (c, d) = (
+            usize::from(cycle[usize::from(a)]),
+            usize::from(cycle[usize::from(b)]),
+        );
+        // two cycles of one ring, of one kind, meeting: one inside the other winds twice
+        if c != d
+            && input[c] == input[d]
+            && kind(c) == kind(d)
+            && (lies_inside(s, c, d) || lies_inside(s, d, c))
+        {
+            return false;
+        }
+    }
+    // a hole touching another ring at its rightmost vertex: `bridge` joins it there
+    (0..rings).all(|h| {
+        let m = usize::from(s.rightmost[h]);
+        kind(h) == 0
+            || s.touched & bit(m) == M::NONE
+            || partner(s, m).is_some_and(|w| usize::from(cycle[w]) == h)
+    })
+}
+
+/// `touch::lies_inside`: whether cycle `c` lies inside cycle `d`, by crossing parity at
+/// its first vertex (from its start) at no position of `d` (no vertex lies inside an
+/// edge: such edges were split), false when there is none.
+fn lies_inside<const N: usize, M: Mask>(s: &Scratch<N, M>, c: usize, d: usize) -> bool {
+    let on_d = |q: Point| s.ring(d).any(|v| s.p[v] == q);
+    let Some(v) = s.ring(c).find(|&v| !on_d(s.p[v])) else {
         return false;
     };
-    (s.rings, s.outer) = (rings, outer);
-    true
+    let q = s.p[v];
+    let winding: i64 = s
+        .ring(d)
+        .map(|w| ray_crossing(s.p[w], s.p[s.next(w)], q))
+        .sum();
+    winding % 2 != 0
 }

@@ -19,30 +19,50 @@ pub(crate) fn clip_ring<const N: usize, M: Mask>(
     out: &mut Vec<[u32; 3]>,
 ) -> bool {
     out.clear();
-    let len = (0..s.rings).map(|r| usize::from(s.len[r])).sum::<usize>() + 2 * (s.rings - 1);
+    let holes = s.hole_rings.count_ones() as usize;
     let mut w = Walk {
         s,
         next: s.next,
         prev: s.prev,
         reflex: M::NONE,
         not_ear: M::NONE,
-        len,
+        len: 0,
         no_fan: false,
         out,
     };
-    let Some(start) = w.classify() else {
-        return false;
-    };
-    let last = if quality {
-        w.quality(start)
-    } else {
-        w.fast(start)
-    };
-    match last {
-        Some(Some(last)) => w.finish(last, lenient),
-        Some(None) => true,
-        None => false,
+    // the polygons in ring order, as the clipper takes them
+    for r in (0..s.rings).filter(|&r| s.hole_rings & 1 << r == 0) {
+        let first = usize::from(s.start[r]);
+        w.len = if s.rings - holes == 1 {
+            // (one polygon: its rings and two bridge copies per hole)
+            (0..s.rings).map(|r| usize::from(s.len[r])).sum::<usize>() + 2 * holes
+        } else {
+            let mut len = 1;
+            let mut v = w.next(first);
+            while v != first && len <= N {
+                (len, v) = (len + 1, w.next(v));
+            }
+            len
+        };
+        (w.reflex, w.not_ear, w.no_fan) = (M::NONE, M::NONE, false);
+        let Some(start) = w.classify(first) else {
+            return false;
+        };
+        let last = if quality {
+            w.quality(start)
+        } else {
+            w.fast(start)
+        };
+        let done = match last {
+            Some(Some(last)) => w.finish(last, lenient),
+            Some(None) => true,
+            None => false,
+        };
+        if !done {
+            return false;
+        }
     }
+    true
 }
 
 /// The ring while it is clipped: its links, reflex vertices and marks.
@@ -81,13 +101,14 @@ impl<const N: usize, M: Mask> Walk<'_, N, M> {
         orient2d(self.p(a), self.p(b), self.p(c)) == Orientation::CounterClockwise
     }
 
-    /// Marks the reflex nodes, as the clipper classifies a ring (a reflex tip is marked
-    /// "not an ear" at once): from the turns the filter took (right turns, or left ones on
-    /// a reversed ring), and at the bridges' ends by their new turns. Returns where the
-    /// clipper starts; `None` where it would remove walls or repeats first.
-    fn classify(&mut self) -> Option<usize> {
+    /// Marks the reflex nodes of the polygon whose ring starts at `first`, as the clipper
+    /// classifies a ring (a reflex tip is marked "not an ear" at once): from the turns the
+    /// filter took (right turns, or left ones on a reversed ring), and at the bridges' and
+    /// touches' ends by their new turns. Returns where the clipper starts; `None` where it
+    /// would remove walls or repeats first.
+    fn classify(&mut self, first: usize) -> Option<usize> {
         let s = self.s;
-        let start = self.prev(usize::from(s.start[s.outer]));
+        let start = self.prev(first);
         let mut v = start;
         for _ in 0..self.len {
             let reflex = if self.is(s.fresh, v) {

@@ -176,6 +176,10 @@ pub(crate) struct Scratch<const N: usize, M> {
     tees: usize,
     /// The edge (start node) each split node splits, by its place after the input's.
     split_of: [u8; TOUCHES],
+    /// Every node at a position several share, by position then node (`cx.shared`), and
+    /// how many (see [`touch::list_shared`]).
+    shared: [u8; 2 * TOUCHES],
+    shared_len: usize,
 }
 
 /// The most positions where rings touch that the stage takes.
@@ -208,6 +212,8 @@ impl<const N: usize, M: Mask> Default for Scratch<N, M> {
             tee: [[0; 2]; TOUCHES],
             tees: 0,
             split_of: [0; TOUCHES],
+            shared: [0; 2 * TOUCHES],
+            shared_len: 0,
         }
     }
 }
@@ -300,7 +306,7 @@ pub(crate) fn check<T: Coord, const N: usize, M: Mask>(
     s.rings = ring_starts.len();
     s.nodes = n;
     (s.left, s.reversed, s.fresh) = (M::NONE, M::NONE, M::NONE);
-    (s.touches, s.touched, s.tees) = (0, M::NONE, 0);
+    (s.touches, s.touched, s.tees, s.shared_len) = (0, M::NONE, 0, 0);
     for r in 0..s.rings {
         let (f, e) = (ring_starts[r], ring_starts.get(r + 1).copied().unwrap_or(n));
         (s.first[r], s.first[r + 1]) = (f as u8, e as u8);
@@ -318,6 +324,7 @@ pub(crate) fn check<T: Coord, const N: usize, M: Mask>(
         return false;
     }
     if s.touches > 0 {
+        touch::list_shared(s);
         canonical_vertices(cx, s);
     }
     if s.tees > 0 && !touch::split(s) {
@@ -329,7 +336,7 @@ pub(crate) fn check<T: Coord, const N: usize, M: Mask>(
         }
     }
     (s.outer, s.hole_rings) = (0, 0);
-    (s.rings == 1 || holes::nest(s, nesting)) && (0..s.touches).all(|t| touch::proper(s, t))
+    (s.rings == 1 || holes::nest(s, nesting)) && touch::proper(s)
 }
 
 /// Step 2 for ring `r`, `clean`'s filter (`filter_ring`) move for move: the same vertices
@@ -509,24 +516,29 @@ fn apart<const N: usize, M: Mask>(s: &mut Scratch<N, M>) -> bool {
 /// first (measured: even at 33–64 edges, faster beyond).
 const PAIRS_MAX: usize = 48;
 
-/// Where rings touch, `clean`'s canonical vertices: both nodes at a position take the
-/// lower vertex index, and the other one is reported (`Coincident`), by position.
+/// Where rings touch, `clean`'s canonical vertices: all nodes at a position take the
+/// lowest vertex index there, and the others are reported (`Coincident`), by position,
+/// then node.
 fn canonical_vertices<const N: usize, M: Mask>(cx: &mut Context, s: &mut Scratch<N, M>) {
-    touch::sort_by_position(s);
-    for t in 0..s.touches {
-        let [a, b] = s.touch[t].map(usize::from);
-        let (keep, other) = if s.vertex[a] < s.vertex[b] {
-            (a, b)
-        } else {
-            (b, a)
-        };
-        let ring = (0..s.rings).rfind(|&r| usize::from(s.first[r]) <= other);
-        cx.dropped.push(Dropped {
-            vertex: u32::from(s.vertex[other]),
-            ring: ring.unwrap_or(0) as u32,
-            reason: DropReason::Coincident,
-        });
-        s.vertex[other] = s.vertex[keep];
+    let mut i = 0;
+    while i < s.shared_len {
+        let j = touch::group_end(s, i);
+        let group = &s.shared[i..j];
+        let min = (group.iter()).map(|&v| s.vertex[usize::from(v)]).min();
+        let min = min.unwrap_or(0);
+        for k in i..j {
+            let v = usize::from(s.shared[k]);
+            if s.vertex[v] != min {
+                let ring = (0..s.rings).rfind(|&r| usize::from(s.first[r]) <= v);
+                cx.dropped.push(Dropped {
+                    vertex: u32::from(s.vertex[v]),
+                    ring: ring.unwrap_or(0) as u32,
+                    reason: DropReason::Coincident,
+                });
+                s.vertex[v] = min;
+            }
+        }
+        i = j;
     }
 }
 

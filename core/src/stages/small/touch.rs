@@ -1,15 +1,16 @@
 //! Rings of the small stage touching at vertices: a hole's vertex on a vertex of the
-//! outer ring or of another hole, two nodes at one position, as `clean`, `nest` and
-//! `touch` handle them in the pipeline.
+//! outer ring or of another hole, or inside an edge, a ring's vertex on its own, up to
+//! eight nodes at one position, as `clean`, `nest` and `touch` handle them in the
+//! pipeline.
 //!
 //! - The proof ([`record`]) lets two edges of different rings meet where they share an
 //!   endpoint and nowhere else (on one line, only leaving it in opposite directions), and
 //!   lists the two nodes there; a vertex inside another edge (of any ring) splits it there
-//!   as `clean` does ([`split`]). Anything else that meets (edges along each other, a
-//!   third node at the position) hands the polygon back.
-//! - Both nodes then take the lower vertex index (`super::canonical_vertices`), and strict
-//!   mode checks that the rings do not cross there ([`proper`], `nest`'s check of shared
-//!   positions).
+//!   as `clean` does ([`split`]). Anything else that meets (edges along each other)
+//!   hands the polygon back.
+//! - The nodes at a position then take the lowest vertex index there
+//!   (`super::canonical_vertices`), and strict mode checks that the rings do not cross
+//!   there ([`proper`], `nest`'s check of shared positions).
 //! - Before bridging, [`join`] re-links each position by the face-walk rule (`touch`'s
 //!   `relink`) and traces the rings again as `touch` does: a hole touching the outer ring
 //!   becomes part of it, two touching holes one hole, a ring touching itself two (lobes,
@@ -19,15 +20,18 @@
 //!   back.
 
 use super::{bit, Mask, Scratch, RINGS, TOUCHES};
+
+/// The most nodes at one position that [`join`] relinks (`touch` pairs every edge
+/// there with every other up to as many, then sorts them by direction).
+const FEW_AT_ONE_POSITION: usize = 8;
 use crate::geom::{
     clockwise_before, cmp_around, cmp_xy, orient2d, ray_crossing, same_ray, within_box,
     Orientation, Point, RightmostVisit,
 };
 
 /// The proof found edges `k` and `m` (indices into `s.boxes`) meeting: whether only at an
-/// endpoint they share, of two different rings, and not along one line; then the two
-/// nodes there are listed (once per position). False, to hand the polygon back, for any
-/// other contact, or too many.
+/// endpoint they share, not along one line; then the two nodes there are listed (each
+/// pair once). False, to hand the polygon back, for any other contact, or too many.
 pub(super) fn record<const N: usize, M: Mask>(s: &mut Scratch<N, M>, k: usize, m: usize) -> bool {
     let (e, f) = (usize::from(s.from[k]), usize::from(s.from[m]));
     let (e2, f2) = (s.next(e), s.next(f));
@@ -59,13 +63,12 @@ pub(super) fn record<const N: usize, M: Mask>(s: &mut Scratch<N, M>, k: usize, m
     if s.touch[..s.touches].contains(&pair) {
         return true;
     }
-    let both = bit::<M>(x) | bit(y);
-    if s.touched & both != M::NONE || s.touches + s.tees == TOUCHES {
-        return false; // a third node at the position
+    if s.touches + s.tees == TOUCHES {
+        return false;
     }
     s.touch[s.touches] = pair;
     s.touches += 1;
-    s.touched |= both;
+    s.touched |= bit::<M>(x) | bit(y);
     true
 }
 
@@ -86,17 +89,50 @@ fn ring_of<const N: usize, M: Mask>(s: &Scratch<N, M>, v: usize) -> usize {
     }
 }
 
-/// The other node at touched node `v`'s position.
-fn partner<const N: usize, M: Mask>(s: &Scratch<N, M>, v: usize) -> Option<usize> {
-    s.touch[..s.touches].iter().find_map(|&[a, b]| {
-        let (a, b) = (usize::from(a), usize::from(b));
-        (a == v).then_some(b).or((b == v).then_some(a))
-    })
+/// The other nodes at touched node `v`'s position.
+fn others<const N: usize, M: Mask>(
+    s: &Scratch<N, M>,
+    v: usize,
+) -> impl Iterator<Item = usize> + '_ {
+    let shared = &s.shared[..s.shared_len];
+    let at = shared.iter().position(|&w| s.p[usize::from(w)] == s.p[v]);
+    let group = at.map_or(&shared[..0], |i| &shared[i..group_end(s, i)]);
+    group
+        .iter()
+        .map(|&w| usize::from(w))
+        .filter(move |&w| w != v)
 }
 
 /// Whether touched node `v`'s position is another visit of its own ring.
 pub(super) fn touches_own_ring<const N: usize, M: Mask>(s: &Scratch<N, M>, v: usize) -> bool {
-    partner(s, v).is_some_and(|w| ring_of(s, w) == ring_of(s, v))
+    others(s, v).any(|w| ring_of(s, w) == ring_of(s, v))
+}
+
+/// Lists every node of the touches by position, then node, each once (`cx.shared`).
+pub(super) fn list_shared<const N: usize, M: Mask>(s: &mut Scratch<N, M>) {
+    let mut len = 0;
+    for t in 0..s.touches {
+        for v in s.touch[t] {
+            if !s.shared[..len].contains(&v) {
+                s.shared[len] = v;
+                len += 1;
+            }
+        }
+    }
+    let p = &s.p;
+    s.shared[..len]
+        .sort_unstable_by(|&a, &b| cmp_xy(p[usize::from(a)], p[usize::from(b)]).then(a.cmp(&b)));
+    s.shared_len = len;
+}
+
+/// The end of the group of `s.shared` at the position of `s.shared[i]`.
+pub(super) fn group_end<const N: usize, M: Mask>(s: &Scratch<N, M>, i: usize) -> usize {
+    let o = s.p[usize::from(s.shared[i])];
+    let mut j = i + 1;
+    while j < s.shared_len && s.p[usize::from(s.shared[j])] == o {
+        j += 1;
+    }
+    j
 }
 
 /// [`record`] where edges e and f (by start node) share no endpoint: `None` when no
@@ -117,7 +153,7 @@ fn tee<const N: usize, M: Mask>(s: &mut Scratch<N, M>, e: usize, f: usize) -> Op
         if s.tee[..s.tees].contains(&listed) {
             return Some(true);
         }
-        if s.touched & bit(y) != M::NONE || s.touches + s.tees == TOUCHES {
+        if s.touches + s.tees == TOUCHES {
             return Some(false);
         }
         s.tee[s.tees] = listed;
@@ -172,43 +208,44 @@ pub(super) fn split<const N: usize, M: Mask>(s: &mut Scratch<N, M>) -> bool {
         }
     }
     // (by position, as the pipeline lists shared nodes)
-    sort_by_position(s);
+    list_shared(s);
     true
 }
 
-/// Sorts the touches by position.
-pub(super) fn sort_by_position<const N: usize, M: Mask>(s: &mut Scratch<N, M>) {
-    let at = |s: &Scratch<N, M>, t: usize| s.p[usize::from(s.touch[t][0])];
-    // (an insertion sort: a few positions)
-    for i in 1..s.touches {
-        let mut j = i;
-        while j > 0 && cmp_xy(at(s, j - 1), at(s, j)) == core::cmp::Ordering::Greater {
-            s.touch.swap(j - 1, j);
-            j -= 1;
+/// Strict mode, after the holes were turned: whether the rings meet without crossing at
+/// every shared position — round it, the winding number of the sectors between the edges
+/// there takes two consecutive values (`nest`'s `check_shared_positions`).
+pub(super) fn proper<const N: usize, M: Mask>(s: &Scratch<N, M>) -> bool {
+    let mut i = 0;
+    while i < s.shared_len {
+        let j = group_end(s, i);
+        let o = s.p[usize::from(s.shared[i])];
+        let mut rays = [(o, 0i32); 2 * FEW_AT_ONE_POSITION];
+        if 2 * (j - i) > rays.len() {
+            return false;
         }
+        for (k, &v) in s.shared[i..j].iter().enumerate() {
+            let v = usize::from(v);
+            rays[2 * k] = (s.p[s.next(v)], 1);
+            rays[2 * k + 1] = (s.p[s.prev(v)], -1);
+        }
+        let rays = &mut rays[..2 * (j - i)];
+        rays.sort_unstable_by(|u, w| cmp_around(o, u.0, w.0));
+        // rays along one direction bound no sector between them
+        let (mut w, mut lo, mut hi) = (0, 0, 0);
+        for (k, &(d, step)) in rays.iter().enumerate() {
+            w += step;
+            let ends = !matches!(rays.get(k + 1), Some(&(e, _)) if cmp_around(o, d, e).is_eq());
+            if ends {
+                (lo, hi) = (lo.min(w), hi.max(w));
+            }
+        }
+        if hi - lo > 1 {
+            return false;
+        }
+        i = j;
     }
-}
-
-/// Strict mode, after the holes were turned: whether the rings at touch `t` meet without
-/// crossing — round the position, the winding number of the sectors between the four
-/// edges there takes two consecutive values (`nest`'s `check_shared_positions`; the
-/// edges' directions all differ, [`record`] saw to that).
-pub(super) fn proper<const N: usize, M: Mask>(s: &Scratch<N, M>, t: usize) -> bool {
-    let [a, b] = s.touch[t].map(usize::from);
-    let o = s.p[a];
-    let mut rays = [
-        (s.p[s.next(a)], 1),
-        (s.p[s.prev(a)], -1),
-        (s.p[s.next(b)], 1),
-        (s.p[s.prev(b)], -1),
-    ];
-    rays.sort_unstable_by(|u, w| cmp_around(o, u.0, w.0));
-    let (mut w, mut lo, mut hi) = (0, 0, 0);
-    for (_, step) in rays {
-        w += step;
-        (lo, hi) = (lo.min(w), hi.max(w));
-    }
-    hi - lo <= 1
+    true
 }
 
 /// Step 6a: re-links every touch by the face-walk rule and traces the rings again
@@ -219,31 +256,44 @@ pub(super) fn join<const N: usize, M: Mask>(s: &mut Scratch<N, M>) -> bool {
     let live = (0..s.rings).fold(M::NONE, |mask, r| {
         s.ring(r).fold(mask, |mask, v| mask | bit(v))
     });
-    // (by position, as `touch` takes them; `canonical_vertices` sorted them so)
-    for t in 0..s.touches {
-        let nodes = s.touch[t].map(usize::from);
-        let o = s.p[nodes[0]];
-        let mut targets = [0usize; 2];
-        for (target, &n) in targets.iter_mut().zip(&nodes) {
+    // (by position, as `touch` takes them)
+    let mut i = 0;
+    while i < s.shared_len {
+        let j = group_end(s, i);
+        // (past this many, `touch` sorts the edges first)
+        if j - i > FEW_AT_ONE_POSITION {
+            return false;
+        }
+        let o = s.p[usize::from(s.shared[i])];
+        let mut targets = [0u8; FEW_AT_ONE_POSITION];
+        for k in i..j {
+            let n = usize::from(s.shared[k]);
             let back = s.p[s.prev(n)];
             let mut best: Option<usize> = None;
-            for &m in &nodes {
-                let q = s.next(m);
+            for &m in &s.shared[i..j] {
+                let q = s.next(usize::from(m));
+                // an edge arriving from where another leaves to (a wall or a crack)
+                if s.p[q] == back {
+                    return false;
+                }
                 best = match best {
                     Some(c) if !clockwise_before(o, back, s.p[q], s.p[c]) => Some(c),
                     _ => Some(q),
                 };
             }
-            *target = best.unwrap_or(n);
+            targets[k - i] = best.unwrap_or(n) as u8;
         }
-        if targets[0] == targets[1] {
+        let targets = &targets[..j - i];
+        if (1..targets.len()).any(|k| targets[..k].contains(&targets[k])) {
             return false; // a conflict: `touch` orders bundles then
         }
-        for (&n, &target) in nodes.iter().zip(&targets) {
+        for (k, &target) in (i..j).zip(targets) {
+            let (n, target) = (usize::from(s.shared[k]), usize::from(target));
             s.next[n] = target as u8;
             s.prev[target] = n as u8;
+            s.fresh |= bit::<M>(n);
         }
-        s.fresh |= bit::<M>(nodes[0]) | bit(nodes[1]);
+        i = j;
     }
     retrace(s, live)
 }
@@ -294,26 +344,35 @@ fn retrace<const N: usize, M: Mask>(s: &mut Scratch<N, M>, mut live: M) -> bool 
     }
     (s.rings, s.hole_rings) = (rings, holes);
     let kind = |c: usize| holes >> c & 1;
-    for &[a, b] in &s.touch[..s.touches] {
-        let (c, d) = (
-            usize::from(cycle[usize::from(a)]),
-            usize::from(cycle[usize::from(b)]),
-        );
-        // two cycles of one ring, of one kind, meeting: one inside the other winds twice
-        if c != d
-            && input[c] == input[d]
-            && kind(c) == kind(d)
-            && (lies_inside(s, c, d) || lies_inside(s, d, c))
-        {
-            return false;
+    let mut i = 0;
+    while i < s.shared_len {
+        let j = group_end(s, i);
+        let group = &s.shared[i..j];
+        for (k, &a) in group.iter().enumerate() {
+            for &b in &group[k + 1..] {
+                let (c, d) = (
+                    usize::from(cycle[usize::from(a)]),
+                    usize::from(cycle[usize::from(b)]),
+                );
+                // two cycles of one ring, of one kind, meeting: one inside the other winds
+                // twice
+                if c != d
+                    && input[c] == input[d]
+                    && kind(c) == kind(d)
+                    && (lies_inside(s, c, d) || lies_inside(s, d, c))
+                {
+                    return false;
+                }
+            }
         }
+        i = j;
     }
     // a hole touching another ring at its rightmost vertex: `bridge` joins it there
     (0..rings).all(|h| {
         let m = usize::from(s.rightmost[h]);
         kind(h) == 0
             || s.touched & bit(m) == M::NONE
-            || partner(s, m).is_some_and(|w| usize::from(cycle[w]) == h)
+            || others(s, m).all(|w| usize::from(cycle[w]) == h)
     })
 }
 

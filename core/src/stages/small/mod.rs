@@ -1,6 +1,7 @@
 //! Stage *small*, in place of all the others for one small polygon: an outer ring and
 //! up to [`RINGS`]` - 1` holes directly inside it, of at most [`MAX`] nodes with the
-//! bridges' copies (a county, a building, nearly every glyph) in one pass over a few
+//! bridges' copies (a county, a building, nearly every glyph; rings touching at vertices
+//! may make it several polygons) in one pass over a few
 //! compact arrays: up to 64 nodes on `u64` masks ([`Narrow`]), up to 128 on `u128`
 //! ([`Wide`]), the same code for both.
 //!
@@ -14,29 +15,31 @@
 //! 3. **Prove** that no two edges meet, other than neighbours at their shared vertex and
 //!    rings touching at a vertex (`touch`): every pair whose boxes overlap is decided by
 //!    exact signs (a lone ring star-shaped from its vertices' mean first passes an O(n)
-//!    certificate). Where a vertex lies inside another ring's edge, the edge is split
-//!    there; both nodes at a touch take the lower vertex index.
+//!    certificate). Where a vertex lies inside an edge, the edge is split there; the
+//!    nodes at a shared position take the lowest vertex index there.
 //! 4. **Orient** every ring counter-clockwise by the turn at its rightmost-lowest vertex.
 //! 5. **Nest** (`holes`): one ring must contain all the others, and none of those another
 //!    (by exact crossing parity at a vertex no other ring touches); the holes are turned
 //!    clockwise; rings must not cross where they touch.
 //! 6. **Join and bridge**: rings touching are joined as `touch` joins them (`touch`), and
-//!    every hole left is bridged (`holes`) to the ring around it as `bridge` does: by
+//!    every hole left is bridged (`holes`) to the polygon around it as `bridge` does: by
 //!    descending rightmost x, the ray's nearest hit, the same visible vertex, the same two
 //!    copies.
-//! 7. **Clip** with the strategy's walk (`walk`): the fast one with the same start, the
-//!    same "not an ear" marks, the same order of ears and the same fan at the end; the
-//!    quality one with the same queue order (smallest angle rank, then node). Reflex and
-//!    marked nodes are bit masks. A cut that would need the clipper's tidying (where a
-//!    bridge's ends come together) hands the polygon back.
+//! 7. **Clip** each polygon, in ring order, with the strategy's walk (`walk`): the fast
+//!    one with the same start, the same "not an ear" marks, the same order of ears and
+//!    the same fan at the end; the quality one with the same queue order (smallest angle
+//!    rank, then node). Reflex and marked nodes are bit masks. A cut that would need the
+//!    clipper's tidying (where a bridge's or a touch's nodes come together) hands the
+//!    polygon back.
 //!
 //! Whatever the pipeline would treat specially makes the stage give up (`false`) before
 //! writing anything the pipeline would not: non-finite coordinates, a spike or a ring
-//! left with fewer than three vertices, two edges meeting otherwise than rings touching
-//! at a vertex (a crossing, a ring touching itself, edges along each other, three nodes
-//! at one position), touching rings in lenient mode or making several polygons, rings
-//! nested otherwise, a bridge target the pipeline would choose by a fallback, a
-//! clockwise last triangle or a ring the walk cannot finish. The
+//! left with fewer than three vertices, two edges meeting otherwise than at a shared vertex
+//! (a crossing, edges along each other, more than eight nodes at one position), a ring
+//! touching itself at its rightmost vertex, touching rings in lenient mode or joined in a
+//! way `touch` decides by another rule, rings nested otherwise, a bridge target the
+//! pipeline would choose by a fallback, a clockwise last triangle or a ring the walk
+//! cannot finish. The
 //! triangulator then runs the pipeline from the start, which finds and reports the same
 //! things as without this stage. `core/tests/small.rs` holds the two to the same output.
 

@@ -505,12 +505,13 @@ fn holes_touching_at_vertices_agree_and_take_the_stage() {
 /// vertex; a ring touching itself: pinched into two polygons, crossing itself round a
 /// lobe turning the same way (refused), or round a hole (once at the hole's rightmost
 /// vertex, where the face walk keeps it one boundary); three holes meeting at one point;
-/// a hole touching its outer ring twice, which cuts it in two polygons. Each in every quarter turn and winding, both nesting conventions.
+/// two holes touching each other inside the outer ring's edge (split there once); a hole
+/// touching its outer ring twice, which cuts it in two polygons. Each in every quarter turn and winding, both nesting conventions.
 #[test]
 fn touches_decided_as_the_pipeline_decides() {
     let square = vec![[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]];
     type Rings = Vec<Vec<[f64; 2]>>;
-    let cases: [(&str, Rings, bool); 9] = [
+    let cases: [(&str, Rings, bool); 10] = [
         (
             "crossing",
             vec![
@@ -594,6 +595,15 @@ fn touches_decided_as_the_pipeline_decides() {
                 vec![[5.0, 5.0], [8.0, 6.0], [7.0, 8.0]],
                 vec![[5.0, 5.0], [3.0, 7.0], [2.0, 4.0]],
                 vec![[5.0, 5.0], [4.0, 2.0], [7.0, 3.0]],
+            ],
+            true,
+        ),
+        (
+            "two holes touching inside the outer ring's edge",
+            vec![
+                square.clone(),
+                vec![[5.0, 0.0], [4.0, 3.0], [2.0, 2.0]],
+                vec![[5.0, 0.0], [8.0, 2.0], [6.0, 3.0]],
             ],
             true,
         ),

@@ -20,14 +20,14 @@
 //!   back.
 
 use super::{bit, Mask, Scratch, RINGS, TOUCHES};
-
-/// The most nodes at one position that [`join`] relinks (`touch` pairs every edge
-/// there with every other up to as many, then sorts them by direction).
-const FEW_AT_ONE_POSITION: usize = 8;
 use crate::geom::{
     clockwise_before, cmp_around, cmp_xy, orient2d, ray_crossing, same_ray, within_box,
     Orientation, Point, RightmostVisit,
 };
+
+/// The most nodes at one position that [`join`] relinks (`touch` pairs every edge
+/// there with every other up to as many, then sorts them by direction).
+const FEW_AT_ONE_POSITION: usize = 8;
 
 /// The proof found edges `k` and `m` (indices into `s.boxes`) meeting: whether only at an
 /// endpoint they share, not along one line; then the two nodes there are listed (each
@@ -136,8 +136,8 @@ pub(super) fn group_end<const N: usize, M: Mask>(s: &Scratch<N, M>, i: usize) ->
 }
 
 /// [`record`] where edges e and f (by start node) share no endpoint: `None` when no
-/// endpoint of f lies inside e; else whether it may (f leaving e's line there, on another
-/// ring), and then it is listed (once) for [`split`].
+/// endpoint of f lies inside e; else whether it may (f leaving e's line there), and then
+/// it is listed (once) for [`split`].
 fn tee<const N: usize, M: Mask>(s: &mut Scratch<N, M>, e: usize, f: usize) -> Option<bool> {
     let (a, b) = (s.p[e], s.p[s.next(e)]);
     for (y, other) in [(f, s.next(f)), (s.next(f), f)] {
@@ -192,6 +192,17 @@ pub(super) fn split<const N: usize, M: Mask>(s: &mut Scratch<N, M>) -> bool {
         let mut after = e;
         while k < s.tees && usize::from(s.tee[k][0]) == e {
             let y = usize::from(s.tee[k][1]);
+            k += 1;
+            if s.p[after] == s.p[y] {
+                // a second vertex where the edge was just split (the two share the
+                // position already): one node there, as `clean` splits
+                if s.touches == TOUCHES {
+                    return false;
+                }
+                s.touch[s.touches] = [y as u8, after as u8];
+                s.touches += 1;
+                continue;
+            }
             let new = s.nodes;
             s.nodes += 1;
             (s.p[new], s.vertex[new]) = (s.p[y], s.vertex[y]);
@@ -204,7 +215,6 @@ pub(super) fn split<const N: usize, M: Mask>(s: &mut Scratch<N, M>) -> bool {
             s.touch[s.touches] = [y as u8, new as u8];
             s.touches += 1;
             s.touched |= bit::<M>(new);
-            k += 1;
         }
     }
     // (by position, as the pipeline lists shared nodes)

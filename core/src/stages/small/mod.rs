@@ -168,8 +168,8 @@ pub(crate) struct Scratch<const N: usize, M> {
     fresh: M,
     /// Twice the polygon's area as lenient mode sums it (see [`double_area`]).
     area: f64,
-    /// Where two rings touch at a vertex: the two nodes there (see [`touch`]), how many
-    /// such positions, and all their nodes.
+    /// Pairs of nodes at one position (rings touching there, or a ring touching itself;
+    /// see [`touch`]), how many, and all their nodes.
     touch: [[u8; 2]; TOUCHES],
     touches: usize,
     touched: M,
@@ -185,7 +185,8 @@ pub(crate) struct Scratch<const N: usize, M> {
     shared_len: usize,
 }
 
-/// The most positions where rings touch that the stage takes.
+/// The most pairs of nodes at shared positions (and vertices inside edges) that the
+/// stage takes.
 const TOUCHES: usize = 16;
 
 impl<const N: usize, M: Mask> Default for Scratch<N, M> {

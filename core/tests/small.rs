@@ -137,6 +137,26 @@ fn runs_taken(nodes: usize) -> usize {
     }
 }
 
+/// `p` turned `turn` quarter turns counter-clockwise round the origin (exactly).
+fn turned([x, y]: [f64; 2], turn: usize) -> [f64; 2] {
+    match turn % 4 {
+        0 => [x, y],
+        1 => [-y, x],
+        2 => [-x, -y],
+        _ => [y, -x],
+    }
+}
+
+/// The rings one after the other: their vertices and where each starts.
+fn flattened(rings: impl IntoIterator<Item = Vec<[f64; 2]>>) -> (Vec<[f64; 2]>, Vec<usize>) {
+    let (mut vertices, mut starts) = (Vec::new(), Vec::new());
+    for ring in rings {
+        starts.push(vertices.len());
+        vertices.extend(ring);
+    }
+    (vertices, starts)
+}
+
 /// Two triangulators: one that may take the small stage, one that never does.
 fn pair<T: Coord>() -> (Triangulator<T>, Triangulator<T>) {
     let mut without = Triangulator::new();
@@ -461,17 +481,11 @@ fn holes_touching_at_vertices_agree_and_take_the_stage() {
         for (nesting, first) in [(Nesting::FirstIsOuter, 0), (Nesting::Auto, k)] {
             let mut order = rings.clone();
             order.swap(0, first);
-            let mut vertices = Vec::new();
-            let mut starts = Vec::new();
-            for r in &order {
-                starts.push(vertices.len());
-                vertices.extend(r.iter().map(|&[x, y]| match turn {
-                    0 => [x, y],
-                    1 => [-y, x],
-                    2 => [-x, -y],
-                    _ => [y, -x],
-                }));
-            }
+            let (vertices, starts) = flattened(
+                order
+                    .iter()
+                    .map(|r| r.iter().map(|&p| turned(p, turn)).collect()),
+            );
             let tag = format!("touching {case}");
             let (_, took) = compare_rings(
                 &mut with64,
@@ -627,18 +641,13 @@ fn touches_decided_as_the_pipeline_decides() {
     for (name, rings, takes) in cases {
         for turn in 0..4 {
             for flip in 0..4 {
-                let mut vertices = Vec::new();
-                let mut starts = Vec::new();
-                for (r, ring) in rings.iter().enumerate() {
-                    starts.push(vertices.len());
-                    let mut ring: Vec<[f64; 2]> = (ring.iter())
-                        .map(|&[x, y]| (0..turn).fold([x, y], |[x, y], _| [-y, x]))
-                        .collect();
+                let (vertices, starts) = flattened(rings.iter().enumerate().map(|(r, ring)| {
+                    let mut ring: Vec<[f64; 2]> = ring.iter().map(|&p| turned(p, turn)).collect();
                     if flip >> (r % 2) & 1 == 1 {
                         ring.reverse();
                     }
-                    vertices.extend(ring);
-                }
+                    ring
+                }));
                 for nesting in [Nesting::FirstIsOuter, Nesting::Auto] {
                     let tag = format!("{name}, turn {turn}, flip {flip}");
                     let (_, took) =
@@ -698,15 +707,7 @@ fn glyphs_and_earcut_fixtures_agree() {
                 continue;
             }
             for turn in 0..4 {
-                let v: Vec<[f64; 2]> = vertices
-                    .iter()
-                    .map(|&[x, y]| match turn {
-                        0 => [x, y],
-                        1 => [-y, x],
-                        2 => [-x, -y],
-                        _ => [y, -x],
-                    })
-                    .collect();
+                let v: Vec<[f64; 2]> = vertices.iter().map(|&p| turned(p, turn)).collect();
                 let tag = format!("{} polygon {k} turn {turn}", file.display());
                 let (_, took) = compare_rings(
                     &mut with,

@@ -45,15 +45,9 @@ impl EdgeIndex {
     /// Lists the edges if they are few for `questions` queries (see [`DIRECT_WORK`]),
     /// else builds the grid.
     fn list(&mut self, pool: &Pool, rings: &[Ring], questions: usize) {
-        self.edges.clear();
-        for ring in rings.iter().filter(|r| r.alive) {
-            self.edges.extend(pool.ring(ring.start));
-            if self.edges.len().saturating_mul(questions) > DIRECT_WORK {
-                return self.rebuild(pool, rings);
-            }
-        }
-        self.listed = true;
-        self.current = true;
+        // (edges × questions ≤ DIRECT_WORK, as a number of edges; no questions: any)
+        let up_to = DIRECT_WORK.checked_div(questions).unwrap_or(usize::MAX);
+        self.rebuild_or_list(pool, rings, up_to);
     }
 
     /// Lists every live edge of the live rings again: only listed when they number at

@@ -1495,7 +1495,10 @@ mod tests {
         let (vertices, starts) = flatten(&refs);
         let (mut cx, mut st) = cleaned(&vertices, &starts, false);
         nest(&mut cx, &mut st.nest, Nesting::FirstIsOuter).expect("valid");
-        assert!(cx.edge_index.is_current(), "counted directly");
+        assert!(
+            cx.edge_index.is_current(),
+            "the general rule, not counted directly"
+        );
         let depths: Vec<u32> = (cx.rings.iter())
             .filter(|r| r.alive)
             .map(|r| r.depth)

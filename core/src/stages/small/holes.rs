@@ -6,8 +6,8 @@
 
 use core::cmp::Ordering;
 
-use super::{bit, members, reverse, Mask, Scratch, RINGS};
-use crate::geom::{compare_hits, corner_contains, left_of, ray_crossing, LeastAngle, Point};
+use super::{bit, members, reverse, ring_mask, winding, Mask, Scratch, RINGS};
+use crate::geom::{compare_hits, corner_contains, left_of, LeastAngle, Point};
 use crate::Nesting;
 
 /// Step 5: decides the rings' roles by containment — exactly one ring contains every
@@ -47,12 +47,9 @@ pub(super) fn nest<const N: usize, M: Mask>(s: &mut Scratch<N, M>, nesting: Nest
 }
 
 /// Whether `q`, on no edge of ring `r`, lies inside it: the ring winds round it (`nest`'s
-/// count, [`ray_crossing`]).
+/// count).
 fn inside<const N: usize, M: Mask>(s: &Scratch<N, M>, r: usize, q: Point) -> bool {
-    let winding: i64 = (s.ring(r))
-        .map(|v| ray_crossing(s.p[v], s.p[s.next(v)], q))
-        .sum();
-    winding != 0
+    winding(s, r, q) != 0
 }
 
 /// Step 6: merges every hole into the ring around it (the outer ring, or one of the
@@ -117,11 +114,6 @@ pub(super) fn bridge<const N: usize, M: Mask>(s: &mut Scratch<N, M>) -> bool {
         s.fresh |= bit::<M>(x) | bit(m) | bit(x2) | bit(m2);
     }
     true
-}
-
-/// The live nodes of ring `r` (before it is bridged).
-fn ring_mask<const N: usize, M: Mask>(s: &Scratch<N, M>, r: usize) -> M {
-    s.ring(r).fold(M::NONE, |mask, v| mask | bit(v))
 }
 
 /// The merged node hole vertex `m` connects to (`bridge::find_hole_bridge`): the ray from

@@ -45,7 +45,8 @@
 
 use crate::context::Context;
 use crate::geom::{
-    approx_cross, boxed_segments_meet, orient2d, within_box, Coord, Orientation, Point,
+    approx_cross, boxed_segments_meet, orient2d, ray_crossing, within_box, Coord, Orientation,
+    Point,
 };
 use crate::report::{DropReason, Dropped};
 use crate::Nesting;
@@ -263,6 +264,19 @@ fn members<M: Mask>(mut mask: M) -> impl Iterator<Item = usize> {
             v
         })
     })
+}
+
+/// The live nodes of ring `r` (before it is bridged).
+fn ring_mask<const N: usize, M: Mask>(s: &Scratch<N, M>, r: usize) -> M {
+    s.ring(r).fold(M::NONE, |mask, v| mask | bit(v))
+}
+
+/// The winding number of ring `r` round `q`, a point on none of its edges
+/// ([`ray_crossing`], as `nest` counts).
+fn winding<const N: usize, M: Mask>(s: &Scratch<N, M>, r: usize, q: Point) -> i64 {
+    (s.ring(r))
+        .map(|v| ray_crossing(s.p[v], s.p[s.next(v)], q))
+        .sum()
 }
 
 /// The nodes the stage needs for this input (its vertices and two copies per hole) when
@@ -533,10 +547,9 @@ fn canonical_vertices<const N: usize, M: Mask>(cx: &mut Context, s: &mut Scratch
         for k in i..j {
             let v = usize::from(s.shared[k]);
             if s.vertex[v] != min {
-                let ring = (0..s.rings).rfind(|&r| usize::from(s.first[r]) <= v);
                 cx.dropped.push(Dropped {
                     vertex: u32::from(s.vertex[v]),
-                    ring: ring.unwrap_or(0) as u32,
+                    ring: touch::ring_of(s, v) as u32,
                     reason: DropReason::Coincident,
                 });
                 s.vertex[v] = min;

@@ -19,10 +19,10 @@
 //!   rule this does not repeat (a conflict, a wall, a ring wound twice) hands the polygon
 //!   back.
 
-use super::{bit, Mask, Scratch, RINGS, TOUCHES};
+use super::{bit, ring_mask, winding, Mask, Scratch, RINGS, TOUCHES};
 use crate::geom::{
-    clockwise_before, cmp_around, cmp_xy, orient2d, ray_crossing, same_ray, within_box,
-    Orientation, Point, RightmostVisit,
+    clockwise_before, cmp_around, cmp_xy, orient2d, same_ray, within_box, Orientation, Point,
+    RightmostVisit,
 };
 
 /// The most nodes at one position that [`join`] relinks (`touch` pairs every edge
@@ -81,7 +81,7 @@ fn ring<const N: usize, M: Mask>(s: &Scratch<N, M>, v: usize) -> usize {
 
 /// The input ring of node `v`: an input node's, or for a node splitting an edge, the
 /// edge's.
-fn ring_of<const N: usize, M: Mask>(s: &Scratch<N, M>, v: usize) -> usize {
+pub(super) fn ring_of<const N: usize, M: Mask>(s: &Scratch<N, M>, v: usize) -> usize {
     let n = usize::from(s.first[s.rings]);
     match v.checked_sub(n) {
         Some(k) if k < TOUCHES => ring(s, usize::from(s.split_of[k])),
@@ -263,9 +263,7 @@ pub(super) fn proper<const N: usize, M: Mask>(s: &Scratch<N, M>) -> bool {
 /// node, each starting there, its rightmost node, and which are holes (the others are
 /// polygons). False where `touch` would go by another rule or refuse the rings.
 pub(super) fn join<const N: usize, M: Mask>(s: &mut Scratch<N, M>) -> bool {
-    let live = (0..s.rings).fold(M::NONE, |mask, r| {
-        s.ring(r).fold(mask, |mask, v| mask | bit(v))
-    });
+    let live = (0..s.rings).fold(M::NONE, |mask, r| mask | ring_mask(s, r));
     // (by position, as `touch` takes them)
     let mut i = 0;
     while i < s.shared_len {
@@ -394,10 +392,5 @@ fn lies_inside<const N: usize, M: Mask>(s: &Scratch<N, M>, c: usize, d: usize) -
     let Some(v) = s.ring(c).find(|&v| !on_d(s.p[v])) else {
         return false;
     };
-    let q = s.p[v];
-    let winding: i64 = s
-        .ring(d)
-        .map(|w| ray_crossing(s.p[w], s.p[s.next(w)], q))
-        .sum();
-    winding % 2 != 0
+    winding(s, d, s.p[v]) % 2 != 0
 }

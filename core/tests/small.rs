@@ -157,6 +157,60 @@ fn flattened(rings: impl IntoIterator<Item = Vec<[f64; 2]>>) -> (Vec<[f64; 2]>, 
     (vertices, starts)
 }
 
+/// The square of side `10 n` from the origin, with a vertex every 10 along each side.
+fn grid_square(n: usize) -> Vec<[f64; 2]> {
+    let side = 10.0 * n as f64;
+    let steps = (0..n).map(|k| 10.0 * k as f64);
+    let bottom = steps.clone().map(|t| [t, 0.0]);
+    let right = steps.clone().map(|t| [side, t]);
+    let top = steps.clone().map(|t| [side - t, side]);
+    let left = steps.map(|t| [0.0, side - t]);
+    bottom.chain(right).chain(top).chain(left).collect()
+}
+
+/// The pairs of triangulators of [`pair`], in f64 and in f32 (only f64 coordinates: the
+/// f32 ones are converted).
+type Precisions = (
+    (Triangulator<f64>, Triangulator<f64>),
+    (Triangulator<f32>, Triangulator<f32>),
+);
+
+/// Runs `rings` (the outer one first) with each ring either way round, in one quarter
+/// turn, nested both ways (the outer ring first for `FirstIsOuter`, anywhere for
+/// `Auto`), in f64 and f32: the stage must give what the pipeline gives. Returns in how
+/// many of the two nestings the stage took the input.
+fn shuffled_agree(
+    ((with64, without64), (with32, without32)): &mut Precisions,
+    rng: &mut Rng,
+    mut rings: Vec<Vec<[f64; 2]>>,
+    tag: &str,
+) -> usize {
+    for ring in rings.iter_mut() {
+        if rng.below(2) == 0 {
+            ring.reverse();
+        }
+    }
+    let turn = rng.below(4);
+    let k = rng.below(rings.len());
+    let mut taken = 0;
+    for (nesting, first) in [(Nesting::FirstIsOuter, 0), (Nesting::Auto, k)] {
+        let mut order = rings.clone();
+        order.swap(0, first);
+        let (vertices, starts) = flattened(
+            order
+                .iter()
+                .map(|r| r.iter().map(|&p| turned(p, turn)).collect()),
+        );
+        let (_, took) = compare_rings(with64, without64, &vertices, &starts, nesting, tag);
+        let v32: Vec<[f32; 2]> = (vertices.iter())
+            .map(|p| [p[0] as f32, p[1] as f32])
+            .collect();
+        compare_rings(with32, without32, &v32, &starts, nesting, tag);
+        taken += usize::from(took > 0);
+    }
+    taken
+}
+
 /// Two triangulators: one that may take the small stage, one that never does.
 fn pair<T: Coord>() -> (Triangulator<T>, Triangulator<T>) {
     let mut without = Triangulator::new();
@@ -433,26 +487,12 @@ fn polygons_with_holes_agree_and_take_the_stage() {
 #[test]
 fn holes_touching_at_vertices_agree_and_take_the_stage() {
     let mut rng = Rng(0x70c4_5eed);
-    let (mut with64, mut without64) = pair::<f64>();
-    let (mut with32, mut without32) = pair::<f32>();
+    let mut both = (pair(), pair());
     let (mut cases, mut taken) = (0, 0);
     for case in 0..2000 {
         let n = 2 + rng.below(2);
         let side = 10.0 * n as f64;
-        let mut outer = Vec::new();
-        for k in 0..n {
-            outer.push([10.0 * k as f64, 0.0]);
-        }
-        for k in 0..n {
-            outer.push([side, 10.0 * k as f64]);
-        }
-        for k in 0..n {
-            outer.push([side - 10.0 * k as f64, side]);
-        }
-        for k in 0..n {
-            outer.push([0.0, side - 10.0 * k as f64]);
-        }
-        let mut rings = vec![outer];
+        let mut rings = vec![grid_square(n)];
         for cell in 0..n * n {
             if rng.below(10) < 3 {
                 continue;
@@ -470,45 +510,76 @@ fn holes_touching_at_vertices_agree_and_take_the_stage() {
         if rings.len() == 1 {
             continue;
         }
-        for ring in rings.iter_mut() {
-            if rng.below(2) == 0 {
-                ring.reverse();
-            }
-        }
-        // the outer ring first for `FirstIsOuter`, anywhere for `Auto`
-        let turn = rng.below(4);
-        let k = rng.below(rings.len());
-        for (nesting, first) in [(Nesting::FirstIsOuter, 0), (Nesting::Auto, k)] {
-            let mut order = rings.clone();
-            order.swap(0, first);
-            let (vertices, starts) = flattened(
-                order
-                    .iter()
-                    .map(|r| r.iter().map(|&p| turned(p, turn)).collect()),
-            );
-            let tag = format!("touching {case}");
-            let (_, took) = compare_rings(
-                &mut with64,
-                &mut without64,
-                &vertices,
-                &starts,
-                nesting,
-                &tag,
-            );
-            let v32: Vec<[f32; 2]> = (vertices.iter())
-                .map(|p| [p[0] as f32, p[1] as f32])
-                .collect();
-            compare_rings(&mut with32, &mut without32, &v32, &starts, nesting, &tag);
-            // (the stage holds up to eight rings)
-            if rings.len() <= 8 {
-                cases += 1;
-                taken += usize::from(took > 0);
-            }
+        let took = shuffled_agree(
+            &mut both,
+            &mut rng,
+            rings.clone(),
+            &format!("touching {case}"),
+        );
+        // (the stage holds up to eight rings)
+        if rings.len() <= 8 {
+            cases += 2;
+            taken += took;
         }
     }
     assert!(
         cases > 2000 && taken == cases,
         "the stage took {taken} of {cases}"
+    );
+}
+
+/// Holes lying along the outer ring and along each other (walls: segments walked both
+/// ways once the edges are split), on a grid of cells: a square filling its cell (sharing
+/// whole sides with its neighbours and the outer ring), a triangle on the cell's bottom
+/// side, or a smaller square standing on it; every ring either way round, in any order,
+/// in every quarter turn, f64 and f32. The stage must give what the pipeline gives, and
+/// take most of them (it leaves positions where every edge is walked both ways, holes
+/// lying wholly on other rings, a ring wound twice or a hole touching at its rightmost
+/// vertex to the pipeline).
+#[test]
+fn holes_along_edges_agree_and_mostly_take_the_stage() {
+    let mut rng = Rng(0xa1_0e6e);
+    let mut both = (pair(), pair());
+    let (mut cases, mut taken) = ([0; 2], [0; 2]);
+    for case in 0..1500 {
+        let full = case % 2 == 1;
+        let n = 2 + rng.below(2);
+        let mut rings = vec![grid_square(n)];
+        for cell in 0..n * n {
+            let (x, y) = ((cell % n) as f64 * 10.0, (cell / n) as f64 * 10.0);
+            let (a, b) = (rng.below(4) as f64, 6.0 + rng.below(5) as f64);
+            match rng.below(6) {
+                0 if full => rings.push(vec![
+                    [x, y],
+                    [x + 10.0, y],
+                    [x + 10.0, y + 10.0],
+                    [x, y + 10.0],
+                ]),
+                1 => rings.push(vec![[x + a, y], [x + b, y], [x + 5.0, y + 7.0]]),
+                2 => rings.push(vec![
+                    [x + a, y],
+                    [x + b, y],
+                    [x + b, y + 5.0],
+                    [x + a, y + 5.0],
+                ]),
+                _ => {}
+            }
+        }
+        if rings.len() == 1 {
+            continue;
+        }
+        let took = shuffled_agree(&mut both, &mut rng, rings.clone(), &format!("along {case}"));
+        if rings.len() <= 8 {
+            cases[usize::from(full)] += 2;
+            taken[usize::from(full)] += took;
+        }
+    }
+    // (without full squares the walls meet the outer ring or each other at a corner
+    // only where a square stands in the outer ring's corner, every edge there walked both
+    // ways; full squares make such corners all over, and holes lying wholly on others)
+    assert!(
+        cases[0] > 1000 && 100 * taken[0] > 85 * cases[0] && 4 * taken[1] > cases[1],
+        "the stage took {taken:?} of {cases:?}"
     );
 }
 
@@ -525,7 +596,7 @@ fn holes_touching_at_vertices_agree_and_take_the_stage() {
 fn touches_decided_as_the_pipeline_decides() {
     let square = vec![[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]];
     type Rings = Vec<Vec<[f64; 2]>>;
-    let cases: [(&str, Rings, bool); 10] = [
+    let cases: [(&str, Rings, bool); 16] = [
         (
             "crossing",
             vec![
@@ -544,8 +615,59 @@ fn touches_decided_as_the_pipeline_decides() {
             true,
         ),
         (
-            "along",
+            "along from a shared vertex",
             vec![square.clone(), vec![[0.0, 0.0], [4.0, 0.0], [2.0, 3.0]]],
+            true,
+        ),
+        (
+            "along inside the outer ring's edge",
+            vec![square.clone(), vec![[3.0, 0.0], [7.0, 0.0], [5.0, 3.0]]],
+            true,
+        ),
+        (
+            "along the whole of the outer ring's edge",
+            vec![square.clone(), vec![[0.0, 0.0], [10.0, 0.0], [5.0, 3.0]]],
+            true,
+        ),
+        (
+            "two holes sharing an edge",
+            vec![
+                square.clone(),
+                vec![[2.0, 2.0], [5.0, 2.0], [5.0, 5.0], [2.0, 5.0]],
+                vec![[5.0, 2.0], [8.0, 2.0], [8.0, 5.0], [5.0, 5.0]],
+            ],
+            true,
+        ),
+        (
+            "two holes sharing part of an edge",
+            vec![
+                square.clone(),
+                vec![[2.0, 2.0], [5.0, 2.0], [5.0, 6.0]],
+                vec![[5.0, 3.0], [8.0, 3.0], [5.0, 8.0]],
+            ],
+            true,
+        ),
+        (
+            "a crack into a hole",
+            vec![vec![
+                [0.0, 0.0],
+                [10.0, 0.0],
+                [10.0, 10.0],
+                [5.0, 10.0],
+                [5.0, 4.0],
+                [6.0, 2.0],
+                [4.0, 2.0],
+                [5.0, 4.0],
+                [5.0, 10.0],
+                [0.0, 10.0],
+            ]],
+            true,
+        ),
+        (
+            // (every edge at the corner is walked both ways: `touch` tells a wall from
+            // a crack by the far ends, which the stage leaves to it)
+            "a hole filling a corner",
+            vec![square.clone(), vec![[0.0, 0.0], [4.0, 0.0], [0.0, 4.0]]],
             false,
         ),
         (

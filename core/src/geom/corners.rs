@@ -2,7 +2,7 @@
 //! the corner between two edges, whether points lie on one ray from it, and which vertex
 //! a hole's bridge sees at the smallest angle to its ray.
 
-use super::predicates::{left_of, orient2d, Orientation, Point};
+use super::predicates::{cmp_around, left_of, orient2d, Orientation, Point};
 
 /// Whether the direction from `o` to `q` lies inside the corner at `o` swept
 /// counter-clockwise from `o → a` to `o → b`: `Some(true)` strictly inside, `Some(false)`
@@ -205,6 +205,80 @@ fn rank(o: Point, back: Point, q: Point) -> u8 {
         Orientation::Collinear => 2,
         Orientation::CounterClockwise => 3,
     }
+}
+
+/// The face-walk rule where edges at `o` share directions (a segment walked both ways, or
+/// several times), as `touch` relinks such positions: `ends` are the edges at `o`, each by
+/// its far end, an id (the node at `o` for an arriving edge, the far node for a leaving
+/// one) and whether it arrives, sorted counter-clockwise round `o` (the edges of one
+/// direction, a bundle, in a fixed order). Around a position of a weakly simple boundary
+/// arriving and leaving edges alternate, and the edges of a bundle lie on one another, so
+/// their order within it is free: each bundle is arranged so that they alternate, the
+/// first edge arriving or not as `first_arrives` says, and each arriving edge continues
+/// along the leaving edge just clockwise of it (the one before it), given to `pair`
+/// (arriving, leaving). False when they cannot alternate so, or `pair` says stop.
+pub(crate) fn pair_alternating<I: Copy>(
+    o: Point,
+    ends: &[(Point, I, bool)],
+    first_arrives: bool,
+    mut pair: impl FnMut(I, I) -> bool,
+) -> bool {
+    let mut expect = first_arrives;
+    let mut last_out: Option<I> = None;
+    // an arriving edge placed first waits for the last leaving one (the order is cyclic)
+    let mut first_in: Option<I> = None;
+    let mut k = 0;
+    while k < ends.len() {
+        let e = bundle_end(o, ends, k);
+        let bundle = &ends[k..e];
+        let ins = bundle.iter().filter(|x| x.2).count();
+        let outs = bundle.len() - ins;
+        let (want, other) = if expect { (ins, outs) } else { (outs, ins) };
+        if want != other && want != other + 1 {
+            return false;
+        }
+        // the expected kind first, then alternately
+        let mut arriving = bundle.iter().filter(|x| x.2);
+        let mut leaving = bundle.iter().filter(|x| !x.2);
+        for step in 0..bundle.len() {
+            if (step % 2 == 0) == expect {
+                let Some(&(_, n, _)) = arriving.next() else {
+                    return false;
+                };
+                match last_out {
+                    Some(target) if !pair(n, target) => return false,
+                    Some(_) => {}
+                    None => first_in = Some(n),
+                }
+            } else {
+                let Some(&(_, target, _)) = leaving.next() else {
+                    return false;
+                };
+                last_out = Some(target);
+            }
+        }
+        if want > other {
+            expect = !expect;
+        }
+        k = e;
+    }
+    if expect != first_arrives {
+        return false;
+    }
+    match (first_in, last_out) {
+        (Some(n), Some(target)) => pair(n, target),
+        (Some(_), None) => false,
+        (None, _) => true,
+    }
+}
+
+/// The end of the bundle starting at `ends[k]`: the run of ends in its direction from `o`.
+pub(crate) fn bundle_end<I>(o: Point, ends: &[(Point, I, bool)], k: usize) -> usize {
+    let mut e = k + 1;
+    while e < ends.len() && cmp_around(o, ends[k].0, ends[e].0) == core::cmp::Ordering::Equal {
+        e += 1;
+    }
+    e
 }
 
 /// A ring's rightmost-lowest visit, as `touch` reads a traced ring's role there: of the

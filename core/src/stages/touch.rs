@@ -16,7 +16,7 @@
 //! read at its rightmost-lowest position: a hole's boundary turns clockwise there at one
 //! of its visits, an outer boundary never does.
 
-use crate::geom::{clockwise_before, RightmostVisit};
+use crate::geom::{bundle_end, clockwise_before, pair_alternating, RightmostVisit};
 use crate::structures::NodeId;
 use core::cmp::Ordering;
 
@@ -360,70 +360,16 @@ fn relink_bundles(cx: &mut Context, s: &mut Scratch, i: usize, j: usize) -> bool
         k = e;
     }
     let crack = !all_doubled || is_crack(cx, s, i, j);
+    let relinked = &mut s.relink;
     let paired = [crack, !crack].into_iter().any(|first_arrives| {
-        s.relink.clear();
-        pair_alternating(o, &ends, first_arrives, &mut s.relink)
+        relinked.clear();
+        pair_alternating(o, &ends, first_arrives, |n, target| {
+            relinked.push((n, target));
+            true
+        })
     });
     s.ends = ends;
     paired
-}
-
-/// Arranges each bundle of `ends` (sorted counter-clockwise around `o`) so that arriving
-/// and leaving edges alternate, the first one arriving or not as `first_arrives` says, and
-/// pairs each arriving edge with the leaving edge just clockwise of it (the one before it
-/// in that order). False when they cannot alternate so.
-fn pair_alternating(
-    o: Point,
-    ends: &[(Point, NodeId, bool)],
-    first_arrives: bool,
-    pairs: &mut Vec<(NodeId, NodeId)>,
-) -> bool {
-    let mut expect = first_arrives;
-    let mut last_out: Option<NodeId> = None;
-    // an arriving edge placed first waits for the last leaving one (the order is cyclic)
-    let mut first_in: Option<NodeId> = None;
-    let mut k = 0;
-    while k < ends.len() {
-        let e = bundle_end(o, ends, k);
-        let bundle = &ends[k..e];
-        let ins = bundle.iter().filter(|x| x.2).count();
-        let outs = bundle.len() - ins;
-        let (want, other) = if expect { (ins, outs) } else { (outs, ins) };
-        if want != other && want != other + 1 {
-            return false;
-        }
-        // the expected kind first, then alternately
-        let mut arriving = bundle.iter().filter(|x| x.2);
-        let mut leaving = bundle.iter().filter(|x| !x.2);
-        for step in 0..bundle.len() {
-            if (step % 2 == 0) == expect {
-                let Some(&(_, n, _)) = arriving.next() else {
-                    return false;
-                };
-                match last_out {
-                    Some(target) => pairs.push((n, target)),
-                    None => first_in = Some(n),
-                }
-            } else {
-                let Some(&(_, target, _)) = leaving.next() else {
-                    return false;
-                };
-                last_out = Some(target);
-            }
-        }
-        if want > other {
-            expect = !expect;
-        }
-        k = e;
-    }
-    if expect != first_arrives {
-        return false;
-    }
-    if let Some(n) = first_in {
-        let Some(target) = last_out else { return false };
-        pairs.push((n, target));
-    }
-    true
 }
 
 /// Whether some edge at the position of `cx.shared[i..j]` arrives from where another one
@@ -437,15 +383,6 @@ fn any_doubled(cx: &Context, i: usize, j: usize) -> bool {
             .filter(|&&m| live(cx, m))
             .any(|&m| cx.pool.p(cx.pool.next(m)) == from)
     })
-}
-
-/// The end of the bundle starting at `ends[k]`: the run of ends in its direction from `o`.
-fn bundle_end(o: Point, ends: &[(Point, NodeId, bool)], k: usize) -> usize {
-    let mut e = k + 1;
-    while e < ends.len() && cmp_around(o, ends[k].0, ends[e].0) == Ordering::Equal {
-        e += 1;
-    }
-    e
 }
 
 /// Whether the region lies on both sides of the doubled edge from `x` to `y` — a crack

@@ -12,8 +12,8 @@
 //!
 //! 1. **Load** the vertices, widened to `f64` (exact), each ring linked by one-byte indices.
 //! 2. **Filter** repeated and straight vertices exactly as `clean` does, in its order.
-//! 3. **Prove** that no two edges meet, other than neighbours at their shared vertex and
-//!    rings touching at a vertex (`touch`): every pair whose boxes overlap is decided by
+//! 3. **Prove** that no two edges cross, and list where they meet other than neighbours
+//!    at their shared vertex (`touch`): every pair whose boxes overlap is decided by
 //!    exact signs (a lone ring star-shaped from its vertices' mean first passes an O(n)
 //!    certificate). Where a vertex lies inside an edge, the edge is split there; the
 //!    nodes at a shared position take the lowest vertex index there.
@@ -34,12 +34,11 @@
 //!
 //! Whatever the pipeline would treat specially makes the stage give up (`false`) before
 //! writing anything the pipeline would not: non-finite coordinates, a spike or a ring
-//! left with fewer than three vertices, two edges meeting otherwise than at a shared vertex
-//! (a crossing, edges along each other, more than eight nodes at one position), a ring
-//! touching itself at its rightmost vertex, touching rings in lenient mode or joined in a
-//! way `touch` decides by another rule, rings nested otherwise, a bridge target the
-//! pipeline would choose by a fallback, a clockwise last triangle or a ring the walk
-//! cannot finish. The
+//! left with fewer than three vertices, two edges crossing, more than eight nodes at one
+//! position, a ring touching itself at its rightmost vertex, touching rings in lenient
+//! mode or joined in a way `touch` decides by another rule, a ring with every vertex on
+//! other rings, rings nested otherwise, a bridge target the pipeline would choose by a
+//! fallback, a clockwise last triangle or a ring the walk cannot finish. The
 //! triangulator then runs the pipeline from the start, which finds and reports the same
 //! things as without this stage. `core/tests/small.rs` holds the two to the same output.
 

@@ -1,64 +1,85 @@
-//! Rings of the small stage touching at vertices: a hole's vertex on a vertex of the
-//! outer ring or of another hole, or inside an edge, a ring's vertex on its own, up to
-//! eight nodes at one position, as `clean`, `nest` and `touch` handle them in the
-//! pipeline.
+//! Rings of the small stage touching: a hole's vertex on a vertex of the outer ring or
+//! of another hole, or inside an edge, a ring's vertex on its own, edges lying along each
+//! other, up to eight nodes at one position, as `clean`, `nest` and `touch` handle them
+//! in the pipeline.
 //!
-//! - The proof ([`record`]) lets two edges of different rings meet where they share an
-//!   endpoint and nowhere else (on one line, only leaving it in opposite directions), and
-//!   lists the two nodes there; a vertex inside another edge (of any ring) splits it there
-//!   as `clean` does ([`split`]). Anything else that meets (edges along each other)
-//!   hands the polygon back.
+//! - The proof ([`record`]) lists what the pipeline's proof lists where two edges meet
+//!   other than crossing: the two nodes of a shared endpoint, and a vertex inside another
+//!   edge (of any ring), which splits it there as `clean` does ([`split`]); on one line,
+//!   every endpoint of either edge on the other. Edges lying along each other become one
+//!   segment walked twice once split.
 //! - The nodes at a position then take the lowest vertex index there
 //!   (`super::canonical_vertices`), and strict mode checks that the rings do not cross
 //!   there ([`proper`], `nest`'s check of shared positions).
 //! - Before bridging, [`join`] re-links each position by the face-walk rule (`touch`'s
-//!   `relink`) and traces the rings again as `touch` does: a hole touching the outer ring
-//!   becomes part of it, two touching holes one hole, a ring touching itself two (lobes,
-//!   or a polygon and its hole), a hole touching the outer ring twice cuts it in two
-//!   polygons; each ring starts at its lowest node. Whatever `touch` would decide by a
-//!   rule this does not repeat (a conflict, a wall, a ring wound twice) hands the polygon
-//!   back.
+//!   `relink`; where a segment is walked both ways or the rule pairs two edges with one,
+//!   by bundles of edges of one direction, [`relink_bundles`]) and traces the rings again
+//!   as `touch` does: a hole touching the outer ring becomes part of it, two touching
+//!   holes one hole, a ring touching itself two (lobes, or a polygon and its hole), a
+//!   hole touching the outer ring twice cuts it in two polygons, a segment walked both
+//!   ways between two parts of the outside closes into a wall, which is dead; each ring
+//!   starts at its lowest node. Whatever `touch` would decide by a rule this does not
+//!   repeat (a position where every edge is walked both ways, which `touch` reads at the
+//!   far ends, a ring it reads by its net boundary, a ring wound twice) hands the
+//!   polygon back.
+
+use core::cmp::Ordering;
 
 use super::{bit, ring_mask, winding, Mask, Scratch, RINGS, TOUCHES};
 use crate::geom::{
-    clockwise_before, cmp_around, cmp_xy, orient2d, same_ray, within_box, Orientation, Point,
-    RightmostVisit,
+    bundle_end, clockwise_before, cmp_around, cmp_xy, orient2d, pair_alternating, within_box,
+    Orientation, Point, RightmostVisit,
 };
 
 /// The most nodes at one position that [`join`] relinks (`touch` pairs every edge
 /// there with every other up to as many, then sorts them by direction).
 const FEW_AT_ONE_POSITION: usize = 8;
 
-/// The proof found edges `k` and `m` (indices into `s.boxes`) meeting: whether only at an
-/// endpoint they share, not along one line; then the two nodes there are listed (each
-/// pair once). False, to hand the polygon back, for any other contact, or too many.
+/// The proof found edges `k` and `m` (indices into `s.boxes`) meeting: lists what the
+/// pipeline's proof (`crossings::proof`'s `contact`) finds there — the two nodes of a
+/// shared endpoint (each pair once), or a vertex inside the other edge (for [`split`]).
+/// On one line (edges along each other) every endpoint of either on the other counts.
+/// False, to hand the polygon back, where they cross, or for too many contacts.
 pub(super) fn record<const N: usize, M: Mask>(s: &mut Scratch<N, M>, k: usize, m: usize) -> bool {
     let (e, f) = (usize::from(s.from[k]), usize::from(s.from[m]));
     let (e2, f2) = (s.next(e), s.next(f));
-    let mut shared = None;
-    for (x, x_other) in [(e, e2), (e2, e)] {
-        for (y, y_other) in [(f, f2), (f2, f)] {
+    let (a, b) = (s.p[e], s.p[e2]);
+    let collinear = |q: Point| orient2d(a, b, q) == Orientation::Collinear;
+    if collinear(s.p[f]) && collinear(s.p[f2]) {
+        for (v, g) in [(f, e), (f2, e), (e, f), (e2, f)] {
+            let (q, g2) = (s.p[v], s.next(g));
+            let listed = if q == s.p[g] {
+                pair(s, v, g)
+            } else if q == s.p[g2] {
+                pair(s, v, g2)
+            } else if within_box(s.p[g], s.p[g2], q) {
+                list_tee(s, g, v)
+            } else {
+                true
+            };
+            if !listed {
+                return false;
+            }
+        }
+        return true;
+    }
+    // not on one line: they meet at one point, an endpoint of one at least
+    for x in [e, e2] {
+        for y in [f, f2] {
             if s.p[x] == s.p[y] {
-                if shared.is_some() {
-                    return false; // the same segment twice
-                }
-                shared = Some((x, x_other, y, y_other));
+                return pair(s, x, y);
             }
         }
     }
-    let Some((x, x_other, y, y_other)) = shared else {
-        // a vertex inside the other edge (or a crossing)
-        return match tee(s, e, f) {
-            Some(listed) => listed,
-            None => tee(s, f, e) == Some(true),
-        };
-    };
-    // two lines meet in one point; on one line the edges overlap unless they leave x
-    // in opposite directions
-    let (o, a, b) = (s.p[x], s.p[x_other], s.p[y_other]);
-    if orient2d(o, a, b) == Orientation::Collinear && same_ray(o, a, b) {
-        return false;
+    // a vertex inside the other edge (or a crossing)
+    match tee(s, e, f) {
+        Some(listed) => listed,
+        None => tee(s, f, e) == Some(true),
     }
+}
+
+/// Lists nodes `x` and `y`, at one position (once); false when the stage holds no more.
+fn pair<const N: usize, M: Mask>(s: &mut Scratch<N, M>, x: usize, y: usize) -> bool {
     let pair = [x.min(y) as u8, x.max(y) as u8];
     if s.touch[..s.touches].contains(&pair) {
         return true;
@@ -69,6 +90,22 @@ pub(super) fn record<const N: usize, M: Mask>(s: &mut Scratch<N, M>, k: usize, m
     s.touch[s.touches] = pair;
     s.touches += 1;
     s.touched |= bit::<M>(x) | bit(y);
+    true
+}
+
+/// Lists vertex `y` inside edge `e` (once) for [`split`]; false when the stage holds no
+/// more.
+fn list_tee<const N: usize, M: Mask>(s: &mut Scratch<N, M>, e: usize, y: usize) -> bool {
+    let listed = [e as u8, y as u8];
+    if s.tee[..s.tees].contains(&listed) {
+        return true;
+    }
+    if s.touches + s.tees == TOUCHES {
+        return false;
+    }
+    s.tee[s.tees] = listed;
+    s.tees += 1;
+    s.touched |= bit(y);
     true
 }
 
@@ -135,33 +172,16 @@ pub(super) fn group_end<const N: usize, M: Mask>(s: &Scratch<N, M>, i: usize) ->
     j
 }
 
-/// [`record`] where edges e and f (by start node) share no endpoint: `None` when no
-/// endpoint of f lies inside e; else whether it may (f leaving e's line there), and then
-/// it is listed (once) for [`split`].
+/// [`record`] where edges e and f (by start node), not on one line, share no endpoint:
+/// `None` when no endpoint of f lies inside e; else it is listed for [`split`] (whether
+/// there was room).
 fn tee<const N: usize, M: Mask>(s: &mut Scratch<N, M>, e: usize, f: usize) -> Option<bool> {
     let (a, b) = (s.p[e], s.p[s.next(e)]);
-    for (y, other) in [(f, s.next(f)), (s.next(f), f)] {
+    let y = [f, s.next(f)].into_iter().find(|&y| {
         let q = s.p[y];
-        if orient2d(a, b, q) != Orientation::Collinear || !within_box(a, b, q) {
-            continue;
-        }
-        // (q is no endpoint of e: they share none)
-        if orient2d(a, b, s.p[other]) == Orientation::Collinear {
-            return Some(false); // along e
-        }
-        let listed = [e as u8, y as u8];
-        if s.tee[..s.tees].contains(&listed) {
-            return Some(true);
-        }
-        if s.touches + s.tees == TOUCHES {
-            return Some(false);
-        }
-        s.tee[s.tees] = listed;
-        s.tees += 1;
-        s.touched |= bit(y);
-        return Some(true);
-    }
-    None
+        orient2d(a, b, q) == Orientation::Collinear && within_box(a, b, q)
+    })?;
+    Some(list_tee(s, e, y))
 }
 
 /// `clean`'s `split_touched_edges`: a node inserted into every edge at each vertex found
@@ -273,30 +293,36 @@ pub(super) fn join<const N: usize, M: Mask>(s: &mut Scratch<N, M>) -> bool {
             return false;
         }
         let o = s.p[usize::from(s.shared[i])];
-        let mut targets = [0u8; FEW_AT_ONE_POSITION];
+        let mut targets = [[0u8; 2]; FEW_AT_ONE_POSITION];
+        // an edge arriving from where another leaves to: a segment walked both ways
+        let mut doubled = false;
         for k in i..j {
             let n = usize::from(s.shared[k]);
             let back = s.p[s.prev(n)];
             let mut best: Option<usize> = None;
             for &m in &s.shared[i..j] {
                 let q = s.next(usize::from(m));
-                // an edge arriving from where another leaves to (a wall or a crack)
-                if s.p[q] == back {
-                    return false;
-                }
+                doubled |= s.p[q] == back;
                 best = match best {
                     Some(c) if !clockwise_before(o, back, s.p[q], s.p[c]) => Some(c),
                     _ => Some(q),
                 };
             }
-            targets[k - i] = best.unwrap_or(n) as u8;
+            targets[k - i] = [n as u8, best.unwrap_or(n) as u8];
         }
-        let targets = &targets[..j - i];
-        if (1..targets.len()).any(|k| targets[..k].contains(&targets[k])) {
-            return false; // a conflict: `touch` orders bundles then
+        let mut targets = &targets[..j - i];
+        let conflict =
+            (1..targets.len()).any(|k| targets[..k].iter().any(|t| t[1] == targets[k][1]));
+        let mut paired = [[0u8; 2]; FEW_AT_ONE_POSITION];
+        if conflict || doubled {
+            // (`touch` orders the edges by bundles then)
+            if !relink_bundles(s, i, j, &mut paired) {
+                return false;
+            }
+            targets = &paired[..j - i];
         }
-        for (k, &target) in (i..j).zip(targets) {
-            let (n, target) = (usize::from(s.shared[k]), usize::from(target));
+        for &[n, target] in targets {
+            let (n, target) = (usize::from(n), usize::from(target));
             s.next[n] = target as u8;
             s.prev[target] = n as u8;
             s.fresh |= bit::<M>(n);
@@ -306,6 +332,58 @@ pub(super) fn join<const N: usize, M: Mask>(s: &mut Scratch<N, M>) -> bool {
     retrace(s, live)
 }
 
+/// `touch::relink_bundles` at the position of `s.shared[i..j]`: the edges around it in
+/// counter-clockwise order (those of one direction, a bundle, in the order listed),
+/// arranged so that arriving and leaving edges alternate, each arriving one continuing
+/// along the leaving one just clockwise of it; the pairs (node, its new successor) into
+/// `pairs`. False where they cannot alternate, and where every bundle is doubled (walked
+/// both ways as often): `touch` then tells a crack from a wall at the far ends, which this
+/// stage does not.
+fn relink_bundles<const N: usize, M: Mask>(
+    s: &Scratch<N, M>,
+    i: usize,
+    j: usize,
+    pairs: &mut [[u8; 2]; FEW_AT_ONE_POSITION],
+) -> bool {
+    let o = s.p[usize::from(s.shared[i])];
+    let mut ends = [(o, 0u8, false); 2 * FEW_AT_ONE_POSITION];
+    for (k, &n) in s.shared[i..j].iter().enumerate() {
+        let (prev, next) = (s.prev(usize::from(n)), s.next(usize::from(n)));
+        ends[2 * k] = (s.p[prev], n, true);
+        ends[2 * k + 1] = (s.p[next], next as u8, false);
+    }
+    let ends = &mut ends[..2 * (j - i)];
+    // (stable, as `touch` sorts them: an insertion sort of a few)
+    for k in 1..ends.len() {
+        let mut m = k;
+        while m > 0 && cmp_around(o, ends[m - 1].0, ends[m].0) == Ordering::Greater {
+            ends.swap(m - 1, m);
+            m -= 1;
+        }
+    }
+    let mut all_doubled = true;
+    let mut k = 0;
+    while k < ends.len() {
+        let e = bundle_end(o, ends, k);
+        let ins = ends[k..e].iter().filter(|x| x.2).count();
+        all_doubled &= 2 * ins == e - k;
+        k = e;
+    }
+    // (not every bundle doubled: `touch` tries the first edge arriving, then leaving)
+    !all_doubled
+        && [true, false].into_iter().any(|first_arrives| {
+            let mut count = 0;
+            let paired = pair_alternating(o, ends, first_arrives, |n, target| {
+                let Some(slot) = pairs.get_mut(count) else {
+                    return false;
+                };
+                (*slot, count) = ([n, target], count + 1);
+                true
+            });
+            paired && count == j - i
+        })
+}
+
 /// `touch::retrace` on the nodes `live`: each cycle a ring, by its lowest node; then
 /// `touch::refuse_rings_winding_twice`'s check, and `bridge`'s case of a hole touching a
 /// polygon at its rightmost vertex, which this stage does not bridge.
@@ -313,6 +391,7 @@ fn retrace<const N: usize, M: Mask>(s: &mut Scratch<N, M>, mut live: M) -> bool 
     let mut cycle = [u8::MAX; N];
     let mut input = [0usize; RINGS];
     let (mut rings, mut holes) = (0, 0u8);
+    let mut walls = M::NONE;
     while live != M::NONE {
         let n = live.lowest();
         if rings == RINGS {
@@ -321,8 +400,10 @@ fn retrace<const N: usize, M: Mask>(s: &mut Scratch<N, M>, mut live: M) -> bool 
         let mut len = 0usize;
         let mut at = RightmostVisit::new(n, s.p[n]);
         let mut m = n;
+        let mut cycle_nodes = M::NONE;
         loop {
             live &= !bit::<M>(m);
+            cycle_nodes |= bit(m);
             cycle[m] = rings as u8;
             len += 1;
             at.visit(m, s.p[m], orient2d(s.p[s.prev(m)], s.p[m], s.p[s.next(m)]));
@@ -334,8 +415,17 @@ fn retrace<const N: usize, M: Mask>(s: &mut Scratch<N, M>, mut live: M) -> bool 
                 return false;
             }
         }
-        // (a wall, or a ring `touch` reads by its net boundary)
-        if at.flat || !at.turns {
+        if at.flat {
+            // a wall (a segment walked both ways): it encloses nothing, and `touch` leaves
+            // it dead
+            walls |= cycle_nodes;
+            for v in super::members(cycle_nodes) {
+                cycle[v] = u8::MAX;
+            }
+            continue;
+        }
+        // (a ring `touch` reads by its net boundary)
+        if !at.turns {
             return false;
         }
         if at.hole {
@@ -363,8 +453,10 @@ fn retrace<const N: usize, M: Mask>(s: &mut Scratch<N, M>, mut live: M) -> bool 
                     usize::from(cycle[usize::from(b)]),
                 );
                 // two cycles of one ring, of one kind, meeting: one inside the other winds
-                // twice
+                // twice (walls are dead: none of their nodes meets anything)
                 if c != d
+                    && c < rings
+                    && d < rings
                     && input[c] == input[d]
                     && kind(c) == kind(d)
                     && (lies_inside(s, c, d) || lies_inside(s, d, c))
@@ -380,7 +472,7 @@ fn retrace<const N: usize, M: Mask>(s: &mut Scratch<N, M>, mut live: M) -> bool 
         let m = usize::from(s.rightmost[h]);
         kind(h) == 0
             || s.touched & bit(m) == M::NONE
-            || others(s, m).all(|w| usize::from(cycle[w]) == h)
+            || others(s, m).all(|w| usize::from(cycle[w]) == h || walls & bit(w) != M::NONE)
     })
 }
 

@@ -781,6 +781,48 @@ fn touches_decided_as_the_pipeline_decides() {
     }
 }
 
+/// Spikes in strict mode: the stage drops the tip as `clean` does and takes the polygon,
+/// unless the tip crossed an edge of the input (`clean` refuses that, naming the crossing:
+/// the stage hands it back). In lenient mode the pipeline takes both. Every quarter turn,
+/// either winding.
+#[test]
+fn spikes_dropped_as_the_pipeline_drops_them() {
+    let spike = vec![
+        [0.0, 0.0],
+        [10.0, 0.0],
+        [10.0, 10.0],
+        [5.0, 10.0],
+        [4.0, 15.0],
+        [5.0, 10.0],
+        [0.0, 10.0],
+    ];
+    let hiding_a_crossing = vec![
+        [0.0, 0.0],
+        [5.0, 0.0],
+        [5.0, 12.0],
+        [5.0, 0.0],
+        [10.0, 0.0],
+        [10.0, 10.0],
+        [0.0, 10.0],
+    ];
+    let (mut with, mut without) = pair::<f64>();
+    for (ring, valid) in [(spike, true), (hiding_a_crossing, false)] {
+        for turn in 0..4 {
+            for flip in [false, true] {
+                let mut ring: Vec<[f64; 2]> = ring.iter().map(|&p| turned(p, turn)).collect();
+                if flip {
+                    ring.reverse();
+                }
+                let tag = format!("spike, valid {valid}, turn {turn}, flip {flip}");
+                let (ok, took) =
+                    compare_rings(&mut with, &mut without, &ring, &[0], Nesting::Auto, &tag);
+                // (strict and lenient, both strategies: the stage takes the strict runs)
+                assert_eq!((ok, took), if valid { (4, 2) } else { (2, 0) }, "{tag}");
+            }
+        }
+    }
+}
+
 /// Every polygon of up to 140 vertices of the glyph datasets, earcut's fixtures and the
 /// named corpus cases (bridging's special cases among them), in four rotations: the stage gives what the pipeline gives, and takes every glyph with
 /// holes that fits it.

@@ -160,6 +160,7 @@ impl<T: Coord> Triangulator<T> {
             vertices,
             ring_starts,
             nesting,
+            false,
             true,
         ) {
             return Ok(());

@@ -88,7 +88,7 @@ pub(crate) fn small_ring<T: Coord>(
     // (the wide form not for the quality walk: it scans its queue, which on more than 64
     // nodes costs more than the pipeline's heap)
     st.small.took = !rounds
-        && small_ring_valid(cx, st, vertices, ring_starts, nesting, !quality)
+        && small_ring_valid(cx, st, vertices, ring_starts, nesting, lenient, !quality)
         && if st.small.used_wide {
             small::clip(&mut st.small.wide, quality, lenient, out)
         } else {
@@ -97,15 +97,16 @@ pub(crate) fn small_ring<T: Coord>(
     st.small.took
 }
 
-/// Strict mode's input check by the small stage (its narrow scratch for up to 64 nodes,
-/// with `wide` the wide one for more): `true` when it proved the input valid; when not,
-/// [`check_input`] must decide.
+/// The input check by the small stage (its narrow scratch for up to 64 nodes, with `wide`
+/// the wide one for more): `true` when it proved the input valid (in lenient mode: when
+/// it takes it); when not, [`check_input`] must decide.
 pub(crate) fn small_ring_valid<T: Coord>(
     cx: &mut Context,
     st: &mut Stages,
     vertices: &[[T; 2]],
     ring_starts: &[usize],
     nesting: Nesting,
+    lenient: bool,
     wide: bool,
 ) -> bool {
     let sm = &mut st.small;
@@ -116,9 +117,9 @@ pub(crate) fn small_ring_valid<T: Coord>(
         Some(n) => {
             sm.used_wide = n > small::NARROW_MAX;
             if sm.used_wide {
-                small::check(cx, &mut sm.wide, vertices, ring_starts, nesting)
+                small::check(cx, &mut sm.wide, vertices, ring_starts, nesting, lenient)
             } else {
-                small::check(cx, &mut sm.narrow, vertices, ring_starts, nesting)
+                small::check(cx, &mut sm.narrow, vertices, ring_starts, nesting, lenient)
             }
         }
     };

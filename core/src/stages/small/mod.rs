@@ -11,7 +11,9 @@
 //! same result: the same triangles in the same order, the same dropped vertices.
 //!
 //! 1. **Load** the vertices, widened to `f64` (exact), each ring linked by one-byte indices.
-//! 2. **Filter** repeated and straight vertices exactly as `clean` does, in its order.
+//! 2. **Filter** repeated and straight vertices, and in strict mode spikes' tips, exactly
+//!    as `clean` does, in its order (after a spike, a crossing of the input's edges that
+//!    the tip hid hands the input back, as `clean` refuses it).
 //! 3. **Prove** that no two edges cross, and list where they meet other than neighbours
 //!    at their shared vertex (`touch`): every pair whose boxes overlap is decided by
 //!    exact signs (a lone ring star-shaped from its vertices' mean first passes an O(n)
@@ -33,8 +35,9 @@
 //!    polygon back.
 //!
 //! Whatever the pipeline would treat specially makes the stage give up (`false`) before
-//! writing anything the pipeline would not: non-finite coordinates, a spike or a ring
-//! left with fewer than three vertices, two edges crossing, more than eight nodes at one
+//! writing anything the pipeline would not: non-finite coordinates, a spike in lenient
+//! mode or one hiding a crossing, a ring left with fewer than three vertices, two edges
+//! crossing, more than eight nodes at one
 //! position, a ring touching itself at its rightmost vertex, touching rings in lenient
 //! mode or joined in a way `touch` decides by another rule, a ring with every vertex on
 //! other rings, rings nested otherwise, a bridge target the pipeline would choose by a
@@ -44,8 +47,8 @@
 
 use crate::context::Context;
 use crate::geom::{
-    approx_cross, boxed_segments_meet, orient2d, ray_crossing, within_box, Coord, Orientation,
-    Point,
+    approx_cross, boxed_segments_meet, crosses, orient2d, ray_crossing, within_box, Coord,
+    Orientation, Point,
 };
 use crate::report::{DropReason, Dropped};
 use crate::Nesting;
@@ -304,6 +307,7 @@ pub(crate) fn check<T: Coord, const N: usize, M: Mask>(
     vertices: &[[T; 2]],
     ring_starts: &[usize],
     nesting: Nesting,
+    lenient: bool,
 ) -> bool {
     let n = vertices.len();
     cx.dropped.clear();
@@ -328,9 +332,15 @@ pub(crate) fn check<T: Coord, const N: usize, M: Mask>(
         let (f, e) = (ring_starts[r], ring_starts.get(r + 1).copied().unwrap_or(n));
         (s.first[r], s.first[r + 1]) = (f as u8, e as u8);
         (s.next[e - 1], s.prev[f]) = (f as u8, (e - 1) as u8);
-        if !filter(cx, s, r) {
+        if !filter(cx, s, r, !lenient) {
             return false;
         }
+    }
+    // (a spike's tip may have hidden a crossing of the input's edges: `clean` refuses
+    // that input, with the crossing it names)
+    let spike = |d: &Dropped| d.reason == DropReason::Spike;
+    if cx.dropped.iter().any(spike) && crossed_as_loaded(s) {
+        return false;
     }
     let proved = if s.rings == 1 {
         star_shaped(s) || apart(s)
@@ -357,9 +367,15 @@ pub(crate) fn check<T: Coord, const N: usize, M: Mask>(
 }
 
 /// Step 2 for ring `r`, `clean`'s filter (`filter_ring`) move for move: the same vertices
-/// dropped, in the same order, and the same start. `false` on a spike, or when fewer than
-/// three vertices are left.
-fn filter<const N: usize, M: Mask>(cx: &mut Context, s: &mut Scratch<N, M>, r: usize) -> bool {
+/// dropped, in the same order, and the same start. `false` on a spike unless `spikes`
+/// (strict mode: the tip is dropped, as `clean` drops it), or when fewer than three
+/// vertices are left.
+fn filter<const N: usize, M: Mask>(
+    cx: &mut Context,
+    s: &mut Scratch<N, M>,
+    r: usize,
+    spikes: bool,
+) -> bool {
     let mut len = usize::from(s.first[r + 1] - s.first[r]);
     let mut v = usize::from(s.first[r]);
     // the last vertex known good; a full lap without a drop ends the loop
@@ -394,8 +410,10 @@ fn filter<const N: usize, M: Mask>(cx: &mut Context, s: &mut Scratch<N, M>, r: u
             continue;
         } else if within_box(pp, px, pn) {
             DropReason::Collinear
+        } else if spikes {
+            DropReason::Spike
         } else {
-            // a spike: strict mode looks for a crossing it hid
+            // (lenient mode's repairs were tuned on the pipeline's rings)
             return false;
         };
         drop(cx, s, v, reason);
@@ -407,6 +425,31 @@ fn filter<const N: usize, M: Mask>(cx: &mut Context, s: &mut Scratch<N, M>, r: u
     s.start[r] = v as u8;
     s.len[r] = len as u8;
     len >= 3
+}
+
+/// Whether two edges of the rings as loaded (repeated and straight vertices, spikes
+/// included) cross properly, neighbours on a ring aside: what `clean` looks for once the
+/// filter dropped a spike's tip (`refuse_hidden_crossing`), comparing every pair.
+fn crossed_as_loaded<const N: usize, M: Mask>(s: &Scratch<N, M>) -> bool {
+    let n = usize::from(s.first[s.rings]);
+    // the loaded edge from vertex i: to the next of its ring, the last to the first
+    let end = |i: usize| {
+        let r = (0..s.rings)
+            .rfind(|&r| usize::from(s.first[r]) <= i)
+            .unwrap_or(0);
+        if i + 1 == usize::from(s.first[r + 1]) {
+            usize::from(s.first[r])
+        } else {
+            i + 1
+        }
+    };
+    (0..n).any(|i| {
+        let (a, b) = (s.p[i], s.p[end(i)]);
+        (i + 1..n).any(|j| {
+            let (k, c, d) = (end(j), s.p[j], s.p[end(j)]);
+            k != i && end(i) != j && crosses(a, b, c, d)
+        })
+    })
 }
 
 /// Whether a turn is to the left; `None` when straight.

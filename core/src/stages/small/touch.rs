@@ -293,34 +293,36 @@ pub(super) fn join<const N: usize, M: Mask>(s: &mut Scratch<N, M>) -> bool {
             return false;
         }
         let o = s.p[usize::from(s.shared[i])];
+        let group = &s.shared[i..j];
+        // an edge arriving from where another leaves to (a segment walked both ways):
+        // `touch` orders the edges by bundles then, whatever the face-walk rule pairs
+        let doubled = (group.iter()).any(|&n| {
+            let back = s.p[s.prev(usize::from(n))];
+            (group.iter()).any(|&m| s.p[s.next(usize::from(m))] == back)
+        });
         let mut targets = [[0u8; 2]; FEW_AT_ONE_POSITION];
-        // an edge arriving from where another leaves to: a segment walked both ways
-        let mut doubled = false;
-        for k in i..j {
-            let n = usize::from(s.shared[k]);
-            let back = s.p[s.prev(n)];
-            let mut best: Option<usize> = None;
-            for &m in &s.shared[i..j] {
-                let q = s.next(usize::from(m));
-                doubled |= s.p[q] == back;
-                best = match best {
-                    Some(c) if !clockwise_before(o, back, s.p[q], s.p[c]) => Some(c),
-                    _ => Some(q),
-                };
+        let by_rule = !doubled && {
+            for (k, &n) in group.iter().enumerate() {
+                let n = usize::from(n);
+                let back = s.p[s.prev(n)];
+                let mut best: Option<usize> = None;
+                for &m in group {
+                    let q = s.next(usize::from(m));
+                    best = match best {
+                        Some(c) if !clockwise_before(o, back, s.p[q], s.p[c]) => Some(c),
+                        _ => Some(q),
+                    };
+                }
+                targets[k] = [n as u8, best.unwrap_or(n) as u8];
             }
-            targets[k - i] = [n as u8, best.unwrap_or(n) as u8];
+            // one-to-one? (else a conflict, which `touch` orders by bundles too)
+            let targets = &targets[..j - i];
+            (1..targets.len()).all(|k| targets[..k].iter().all(|t| t[1] != targets[k][1]))
+        };
+        if !by_rule && !relink_bundles(s, i, j, &mut targets) {
+            return false;
         }
-        let mut targets = &targets[..j - i];
-        let conflict =
-            (1..targets.len()).any(|k| targets[..k].iter().any(|t| t[1] == targets[k][1]));
-        let mut paired = [[0u8; 2]; FEW_AT_ONE_POSITION];
-        if conflict || doubled {
-            // (`touch` orders the edges by bundles then)
-            if !relink_bundles(s, i, j, &mut paired) {
-                return false;
-            }
-            targets = &paired[..j - i];
-        }
+        let targets = &targets[..j - i];
         for &[n, target] in targets {
             let (n, target) = (usize::from(n), usize::from(target));
             s.next[n] = target as u8;

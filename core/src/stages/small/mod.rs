@@ -429,27 +429,39 @@ fn filter<const N: usize, M: Mask>(
 
 /// Whether two edges of the rings as loaded (repeated and straight vertices, spikes
 /// included) cross properly, neighbours on a ring aside: what `clean` looks for once the
-/// filter dropped a spike's tip (`refuse_hidden_crossing`), comparing every pair.
+/// filter dropped a spike's tip (`refuse_hidden_crossing`), comparing every pair whose
+/// boxes overlap.
 fn crossed_as_loaded<const N: usize, M: Mask>(s: &Scratch<N, M>) -> bool {
-    let n = usize::from(s.first[s.rings]);
-    // the loaded edge from vertex i: to the next of its ring, the last to the first
-    let end = |i: usize| {
-        let r = (0..s.rings)
-            .rfind(|&r| usize::from(s.first[r]) <= i)
-            .unwrap_or(0);
-        if i + 1 == usize::from(s.first[r + 1]) {
-            usize::from(s.first[r])
-        } else {
-            i + 1
+    // each loaded edge: its box, its start and its end (a ring's last vertex to its first)
+    let mut edges = [([0.0; 4], 0u8, 0u8); N];
+    let mut k = 0;
+    for r in 0..s.rings {
+        let (f, e) = (usize::from(s.first[r]), usize::from(s.first[r + 1]));
+        for i in f..e {
+            let end = if i + 1 == e { f } else { i + 1 };
+            let (a, b) = (s.p[i], s.p[end]);
+            let bounds = [a.x.min(b.x), a.x.max(b.x), a.y.min(b.y), a.y.max(b.y)];
+            edges[k] = (bounds, i as u8, end as u8);
+            k += 1;
         }
-    };
-    (0..n).any(|i| {
-        let (a, b) = (s.p[i], s.p[end(i)]);
-        (i + 1..n).any(|j| {
-            let (k, c, d) = (end(j), s.p[j], s.p[end(j)]);
-            k != i && end(i) != j && crosses(a, b, c, d)
+    }
+    // by their left sides: each compared with those starting before it ends
+    let edges = &mut edges[..k];
+    edges.sort_unstable_by(|e, f| e.0[0].total_cmp(&f.0[0]));
+    let edges = &*edges;
+    edges
+        .iter()
+        .enumerate()
+        .any(|(k, &([_, x1, y0, y1], a, b))| {
+            let starting = edges[k + 1..].iter().take_while(|f| f.0[0] <= x1);
+            starting.into_iter().any(|&([_, _, w0, w1], c, d)| {
+                // (neighbours share a vertex, which no proper crossing does)
+                w0 <= y1 && y0 <= w1 && b != c && d != a && {
+                    let [a, b, c, d] = [a, b, c, d].map(|v| s.p[usize::from(v)]);
+                    crosses(a, b, c, d)
+                }
+            })
         })
-    })
 }
 
 /// Whether a turn is to the left; `None` when straight.

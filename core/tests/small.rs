@@ -781,10 +781,10 @@ fn touches_decided_as_the_pipeline_decides() {
     }
 }
 
-/// Spikes in strict mode: the stage drops the tip as `clean` does and takes the polygon,
-/// unless the tip crossed an edge of the input (`clean` refuses that, naming the crossing:
-/// the stage hands it back). In lenient mode the pipeline takes both. Every quarter turn,
-/// either winding.
+/// Spikes in strict mode: the stage drops the tip as `clean` does and takes the polygon
+/// (or drops the ring whole where the rest has no area), unless the tip crossed an edge
+/// of the input (`clean` refuses that, naming the crossing: the stage hands it back). In
+/// lenient mode the pipeline takes them all. Every quarter turn, either winding.
 #[test]
 fn spikes_dropped_as_the_pipeline_drops_them() {
     let spike = vec![
@@ -805,8 +805,16 @@ fn spikes_dropped_as_the_pipeline_drops_them() {
         [10.0, 10.0],
         [0.0, 10.0],
     ];
+    // (its tip dropped, the rest has no area: dropped whole, nothing to triangulate)
+    let no_area = vec![
+        [0.0, 0.0],
+        [10.0, 0.0],
+        [10.0, 10.0],
+        [10.0, 0.0],
+        [5.0, 0.0],
+    ];
     let (mut with, mut without) = pair::<f64>();
-    for (ring, valid) in [(spike, true), (hiding_a_crossing, false)] {
+    for (ring, valid) in [(spike, true), (no_area, true), (hiding_a_crossing, false)] {
         for turn in 0..4 {
             for flip in [false, true] {
                 let mut ring: Vec<[f64; 2]> = ring.iter().map(|&p| turned(p, turn)).collect();

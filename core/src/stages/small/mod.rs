@@ -36,8 +36,8 @@
 //!
 //! Whatever the pipeline would treat specially makes the stage give up (`false`) before
 //! writing anything the pipeline would not: non-finite coordinates, a spike in lenient
-//! mode or one hiding a crossing, a ring left with fewer than three vertices, two edges
-//! crossing, more than eight nodes at one
+//! mode or one hiding a crossing, a ring left with fewer than three vertices (but for the
+//! only ring in strict mode, dropped whole as `clean` drops it), two edges crossing, more than eight nodes at one
 //! position, a ring touching itself at its rightmost vertex, touching rings in lenient
 //! mode or joined in a way `touch` decides by another rule, a ring with every vertex on
 //! other rings, rings nested otherwise, a bridge target the pipeline would choose by a
@@ -336,11 +336,16 @@ pub(crate) fn check<T: Coord, const N: usize, M: Mask>(
             return false;
         }
     }
-    // (a spike's tip may have hidden a crossing of the input's edges: `clean` refuses
-    // that input, with the crossing it names)
-    let spike = |d: &Dropped| d.reason == DropReason::Spike;
-    if cx.dropped.iter().any(spike) && crossed_as_loaded(s) {
+    // (a spike's tip, or a ring of no area, may have hidden a crossing of the input's
+    // edges: `clean` refuses that input, with the crossing it names)
+    let gone = |d: &Dropped| matches!(d.reason, DropReason::Spike | DropReason::DegenerateRing);
+    if cx.dropped.iter().any(gone) && crossed_as_loaded(s) {
         return false;
+    }
+    if s.len[0] == 0 {
+        // the only ring dropped: nothing to triangulate
+        s.rings = 0;
+        return true;
     }
     let proved = if s.rings == 1 {
         star_shaped(s) || apart(s)
@@ -369,7 +374,8 @@ pub(crate) fn check<T: Coord, const N: usize, M: Mask>(
 /// Step 2 for ring `r`, `clean`'s filter (`filter_ring`) move for move: the same vertices
 /// dropped, in the same order, and the same start. `false` on a spike unless `spikes`
 /// (strict mode: the tip is dropped, as `clean` drops it), or when fewer than three
-/// vertices are left.
+/// vertices are left — but for the only ring in strict mode, which is then dropped whole
+/// (its length 0).
 fn filter<const N: usize, M: Mask>(
     cx: &mut Context,
     s: &mut Scratch<N, M>,
@@ -424,6 +430,16 @@ fn filter<const N: usize, M: Mask>(
     }
     s.start[r] = v as u8;
     s.len[r] = len as u8;
+    if len < 3 && spikes && s.rings == 1 {
+        // strict mode, the only ring: dropped whole, as `clean` drops a ring of no area
+        for _ in 0..len {
+            let next = s.next(v);
+            drop(cx, s, v, DropReason::DegenerateRing);
+            v = next;
+        }
+        s.len[r] = 0;
+        return true;
+    }
     len >= 3
 }
 

@@ -557,7 +557,8 @@ fn apart<const N: usize, M: Mask>(s: &mut Scratch<N, M>) -> bool {
         let (e, f) = (usize::from(s.from[k]), usize::from(s.from[m]));
         let (a, b) = (s.p[e], s.p[s.next(e)]);
         let (c, d) = (s.p[f], s.p[s.next(f)]);
-        boxed_segments_meet(a, b, c, d)
+        // (edges with an end in common meet: no signs needed to know)
+        a == c || a == d || b == c || b == d || boxed_segments_meet(a, b, c, d)
     };
     if edges <= PAIRS_MAX {
         for (k, around) in around.iter().enumerate().take(edges) {

@@ -822,6 +822,15 @@ fn spikes_dropped_as_the_pipeline_drops_them() {
                     ring.reverse();
                 }
                 let tag = format!("spike, valid {valid}, turn {turn}, flip {flip}");
+                // (a polygon with a hole first: nothing of it may stay behind)
+                let (holed, starts) = flattened([
+                    vec![[0.0, 0.0], [9.0, 0.0], [9.0, 9.0], [0.0, 9.0]],
+                    vec![[3.0, 3.0], [3.0, 6.0], [6.0, 6.0], [6.0, 3.0]],
+                ]);
+                let nesting = Nesting::FirstIsOuter;
+                let (_, took) =
+                    compare_rings(&mut with, &mut without, &holed, &starts, nesting, &tag);
+                assert_eq!(took, 4, "{tag}");
                 let (ok, took) =
                     compare_rings(&mut with, &mut without, &ring, &[0], Nesting::Auto, &tag);
                 // (strict and lenient, both strategies: the stage takes the strict runs)

@@ -344,7 +344,7 @@ pub(crate) fn check<T: Coord, const N: usize, M: Mask>(
     }
     if s.len[0] == 0 {
         // the only ring dropped: nothing to triangulate
-        s.rings = 0;
+        (s.rings, s.outer, s.hole_rings) = (0, 0, 0);
         return true;
     }
     let proved = if s.rings == 1 {

@@ -272,6 +272,39 @@ pub(crate) fn pair_alternating<I: Copy>(
     }
 }
 
+/// Whether the region lies on both sides of a segment walked both ways from `o` towards
+/// `x` (a crack into it, not a wall), read at `o` from its edges: `nets` holds each
+/// edge's far end with +1 for an edge arriving at `o`, -1 for one leaving. Just
+/// counter-clockwise of an arriving edge lies the outside, of a leaving one the inside;
+/// edges of one direction count by their sum, and doubled ones (summing to 0) change
+/// nothing. `None` when every direction there is doubled, or none runs towards `x` with
+/// a sum of 0. Sorts and merges `nets` in place.
+pub(crate) fn inside_along(o: Point, nets: &mut [(Point, i32)], x: Point) -> Option<bool> {
+    // (the order within a direction does not matter: its edges are summed)
+    nets.sort_unstable_by(|a, b| cmp_around(o, a.0, b.0));
+    let mut m = 0;
+    for k in 0..nets.len() {
+        if m > 0 && cmp_around(o, nets[m - 1].0, nets[k].0) == core::cmp::Ordering::Equal {
+            nets[m - 1].1 += nets[k].1;
+        } else {
+            nets[m] = nets[k];
+            m += 1;
+        }
+    }
+    let bundles = &nets[..m];
+    let last = bundles.iter().rposition(|b| b.1 != 0)?;
+    let mut inside = bundles[last].1 < 0;
+    for k in 0..bundles.len() {
+        let b = bundles[(last + 1 + k) % bundles.len()];
+        if b.1 != 0 {
+            inside = b.1 < 0;
+        } else if cmp_around(o, b.0, x) == core::cmp::Ordering::Equal {
+            return Some(inside);
+        }
+    }
+    None
+}
+
 /// The end of the bundle starting at `ends[k]`: the run of ends in its direction from `o`.
 pub(crate) fn bundle_end<I>(o: Point, ends: &[(Point, I, bool)], k: usize) -> usize {
     let mut e = k + 1;

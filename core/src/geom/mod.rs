@@ -11,8 +11,8 @@ mod segments;
 
 pub use coord::Coord;
 pub(crate) use corners::{
-    bundle_end, clockwise_before, corner_contains, on_ray, pair_alternating, LeastAngle,
-    RightmostVisit,
+    bundle_end, clockwise_before, corner_contains, inside_along, on_ray, pair_alternating,
+    LeastAngle, RightmostVisit,
 };
 pub(crate) use ears::{bounds, interferes, near};
 pub(crate) use exact::{in_range, SnapGrid};

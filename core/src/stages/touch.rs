@@ -16,7 +16,7 @@
 //! read at its rightmost-lowest position: a hole's boundary turns clockwise there at one
 //! of its visits, an outer boundary never does.
 
-use crate::geom::{bundle_end, clockwise_before, pair_alternating, RightmostVisit};
+use crate::geom::{bundle_end, clockwise_before, inside_along, pair_alternating, RightmostVisit};
 use crate::structures::NodeId;
 use core::cmp::Ordering;
 
@@ -406,32 +406,7 @@ fn crack_at(cx: &Context, y_node: NodeId, x: Point, nets: &mut Vec<(Point, i32)>
     } else {
         nodes.iter().filter(|&&n| live(cx, n)).for_each(|&n| add(n));
     }
-    nets.sort_by(|a, b| cmp_around(y, a.0, b.0));
-    // net count per direction, in order, merged in place
-    let mut m = 0;
-    for k in 0..nets.len() {
-        if m > 0 && cmp_around(y, nets[m - 1].0, nets[k].0) == Ordering::Equal {
-            nets[m - 1].1 += nets[k].1;
-        } else {
-            nets[m] = nets[k];
-            m += 1;
-        }
-    }
-    nets.truncate(m);
-    let bundles = &nets[..];
-    // just counter-clockwise of an arriving edge lies the outside, of a leaving one the
-    // inside; doubled bundles change nothing
-    let last = bundles.iter().rposition(|b| b.1 != 0)?;
-    let mut inside = bundles[last].1 < 0;
-    for k in 0..bundles.len() {
-        let b = bundles[(last + 1 + k) % bundles.len()];
-        if b.1 != 0 {
-            inside = b.1 < 0;
-        } else if cmp_around(y, b.0, x) == Ordering::Equal {
-            return Some(inside);
-        }
-    }
-    None
+    inside_along(y, nets, x)
 }
 
 /// Whether the doubled edges through the position of `cx.shared[i..j]` are cracks into the

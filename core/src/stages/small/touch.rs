@@ -27,8 +27,8 @@ use core::cmp::Ordering;
 
 use super::{bit, ring_mask, winding, Mask, Scratch, RINGS, TOUCHES};
 use crate::geom::{
-    bundle_end, clockwise_before, cmp_around, cmp_xy, orient2d, pair_alternating, within_box,
-    Orientation, Point, RightmostVisit,
+    bundle_end, clockwise_before, cmp_around, cmp_xy, inside_along, orient2d, pair_alternating,
+    within_box, Orientation, Point, RightmostVisit,
 };
 
 /// The most nodes at one position that [`join`] relinks (`touch` pairs every edge
@@ -338,9 +338,7 @@ pub(super) fn join<const N: usize, M: Mask>(s: &mut Scratch<N, M>) -> bool {
 /// counter-clockwise order (those of one direction, a bundle, in the order listed),
 /// arranged so that arriving and leaving edges alternate, each arriving one continuing
 /// along the leaving one just clockwise of it; the pairs (node, its new successor) into
-/// `pairs`. False where they cannot alternate, and where every bundle is doubled (walked
-/// both ways as often): `touch` then tells a crack from a wall at the far ends, which this
-/// stage does not.
+/// `pairs`. False where they cannot alternate.
 fn relink_bundles<const N: usize, M: Mask>(
     s: &Scratch<N, M>,
     i: usize,
@@ -371,19 +369,65 @@ fn relink_bundles<const N: usize, M: Mask>(
         all_doubled &= 2 * ins == e - k;
         k = e;
     }
-    // (not every bundle doubled: `touch` tries the first edge arriving, then leaving)
-    !all_doubled
-        && [true, false].into_iter().any(|first_arrives| {
-            let mut count = 0;
-            let paired = pair_alternating(o, ends, first_arrives, |n, target| {
-                let Some(slot) = pairs.get_mut(count) else {
-                    return false;
-                };
-                (*slot, count) = ([n, target], count + 1);
-                true
-            });
-            paired && count == j - i
-        })
+    // where every bundle is doubled both starts alternate: arriving first makes cracks,
+    // leaving first walls, and the far ends tell which it is; elsewhere only one does
+    let crack = if all_doubled {
+        match is_crack(s, i, j) {
+            Some(crack) => crack,
+            None => return false,
+        }
+    } else {
+        true
+    };
+    [crack, !crack].into_iter().any(|first_arrives| {
+        let mut count = 0;
+        let paired = pair_alternating(o, ends, first_arrives, |n, target| {
+            let Some(slot) = pairs.get_mut(count) else {
+                return false;
+            };
+            (*slot, count) = ([n, target], count + 1);
+            true
+        });
+        paired && count == j - i
+    })
+}
+
+/// `touch::is_crack`: whether the doubled edges through the position of `s.shared[i..j]`
+/// are cracks into the region (its inside on both sides) rather than walls, as read at
+/// their far ends ([`crack_at`]); walls when no far end tells. `None` where a far end has
+/// more edges than the stage holds.
+fn is_crack<const N: usize, M: Mask>(s: &Scratch<N, M>, i: usize, j: usize) -> Option<bool> {
+    let x = s.p[usize::from(s.shared[i])];
+    for &n in &s.shared[i..j] {
+        if let Some(crack) = crack_at(s, s.prev(usize::from(n)), x)? {
+            return Some(crack);
+        }
+    }
+    Some(false)
+}
+
+/// `touch::crack_at`: whether the region lies on both sides of the doubled edge from `x`
+/// to node `y`'s position, read at `y`, where an edge that is not doubled says which
+/// sectors are inside; `Some(None)` when every edge there is doubled too, `None` when
+/// there are more than the stage holds.
+fn crack_at<const N: usize, M: Mask>(
+    s: &Scratch<N, M>,
+    y: usize,
+    x: Point,
+) -> Option<Option<bool>> {
+    let o = s.p[y];
+    // (far end, +1 arriving / -1 leaving) of every edge at y's position
+    let mut nets = [(o, 0i32); 2 * FEW_AT_ONE_POSITION];
+    let mut len = 0;
+    for n in core::iter::once(y).chain(others(s, y)) {
+        if len + 2 > nets.len() {
+            return None;
+        }
+        nets[len] = (s.p[s.prev(n)], 1);
+        nets[len + 1] = (s.p[s.next(n)], -1);
+        len += 2;
+    }
+    Some(inside_along(o, &mut nets[..len], x))
 }
 
 /// `touch::retrace` on the nodes `live`: each cycle a ring, by its lowest node; then

@@ -18,10 +18,10 @@
 //!   holes one hole, a ring touching itself two (lobes, or a polygon and its hole), a
 //!   hole touching the outer ring twice cuts it in two polygons, a segment walked both
 //!   ways between two parts of the outside closes into a wall, which is dead; each ring
-//!   starts at its lowest node. Whatever `touch` would decide by a rule this does not
-//!   repeat (a position where every edge is walked both ways, which `touch` reads at the
-//!   far ends, a ring it reads by its net boundary, a ring wound twice) hands the
-//!   polygon back.
+//!   starts at its lowest node. Where every edge at a position is walked both ways, the
+//!   far ends tell a wall from a crack into the region, as `touch` reads them. Whatever
+//!   `touch` would decide by a rule this does not repeat (a ring it reads by its net
+//!   boundary, a ring wound twice) hands the polygon back.
 
 use core::cmp::Ordering;
 

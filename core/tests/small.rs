@@ -126,13 +126,10 @@ fn ring(rng: &mut Rng, n: usize, grid: f64) -> (Vec<[f64; 2]>, bool) {
 }
 
 /// Of the four runs of [`compare_rings`] (two strategies, strict and lenient), how many
-/// the stage takes on a valid polygon of `nodes` nodes: all up to 64 nodes, the fast
-/// strategy's up to 128 (the quality walk's queue scan costs more than the pipeline's
-/// heap there), none beyond.
+/// the stage takes on a valid polygon of `nodes` nodes: all up to 128, none beyond.
 fn runs_taken(nodes: usize) -> usize {
     match nodes {
-        0..=64 => 4,
-        65..=128 => 2,
+        0..=128 => 4,
         _ => 0,
     }
 }

@@ -161,7 +161,6 @@ impl<T: Coord> Triangulator<T> {
             ring_starts,
             nesting,
             false,
-            true,
         ) {
             return Ok(());
         }

@@ -85,10 +85,8 @@ pub(crate) fn small_ring<T: Coord>(
     let rounds = (st.clip.threads.as_ref()).is_some_and(|t| vertices.len() >= t.min);
     #[cfg(not(feature = "threads"))]
     let rounds = false;
-    // (the wide form not for the quality walk: it scans its queue, which on more than 64
-    // nodes costs more than the pipeline's heap)
     st.small.took = !rounds
-        && small_ring_valid(cx, st, vertices, ring_starts, nesting, lenient, !quality)
+        && small_ring_valid(cx, st, vertices, ring_starts, nesting, lenient)
         && if st.small.used_wide {
             small::clip(&mut st.small.wide, quality, lenient, out)
         } else {
@@ -97,9 +95,9 @@ pub(crate) fn small_ring<T: Coord>(
     st.small.took
 }
 
-/// The input check by the small stage (its narrow scratch for up to 64 nodes, with `wide`
-/// the wide one for more): `true` when it proved the input valid (in lenient mode: when
-/// it takes it); when not, [`check_input`] must decide.
+/// The input check by the small stage (its narrow scratch for up to 64 nodes, the wide
+/// one for more): `true` when it proved the input valid (in lenient mode: when it takes
+/// it); when not, [`check_input`] must decide.
 pub(crate) fn small_ring_valid<T: Coord>(
     cx: &mut Context,
     st: &mut Stages,
@@ -107,11 +105,9 @@ pub(crate) fn small_ring_valid<T: Coord>(
     ring_starts: &[usize],
     nesting: Nesting,
     lenient: bool,
-    wide: bool,
 ) -> bool {
     let sm = &mut st.small;
-    let limit = if wide { small::MAX } else { small::NARROW_MAX };
-    let nodes = (small::nodes(vertices.len(), ring_starts)).filter(|&n| !sm.off && n <= limit);
+    let nodes = (small::nodes(vertices.len(), ring_starts)).filter(|_| !sm.off);
     sm.took = match nodes {
         None => false,
         Some(n) => {

@@ -170,21 +170,21 @@ impl<const N: usize, M: Mask> Walk<'_, N, M> {
 
     /// The quality strategy (`Clipper::quality`): always the ear with the smallest angle
     /// at its tip, from a queue of convex tips by angle rank, then node (one entry per
-    /// node, the smallest found by a scan). A tip is tested when it comes up. (The
-    /// clipper also skips tips whose neighbour was cut since they were queued; here both
-    /// neighbours of every cut are queued again, or turn reflex and fail the test, so
-    /// every entry is current.)
+    /// node; the smallest found by a scan in the narrow form, kept at the root of a
+    /// tournament tree in the wide one, where a scan per cut would cost more than the
+    /// pipeline's heap). A tip is tested when it comes up. (The clipper also skips tips
+    /// whose neighbour was cut since they were queued; here both neighbours of every cut
+    /// are queued again, or turn reflex and fail the test, so every entry is current.)
     fn quality(&mut self, start: usize) -> Option<Option<usize>> {
-        // by node: its entry, `u64::MAX` for none (only the nodes in use are read)
-        let mut queue = [u64::MAX; N];
-        let push = |w: &Self, v: usize, queue: &mut [u64; N]| {
+        let mut queue = Queue::<N>::new();
+        let push = |w: &Self, v: usize, queue: &mut Queue<N>| {
             if !w.is(w.reflex, v) {
                 let rank = approx_angle_rank(w.p(w.prev(v)), w.p(v), w.p(w.next(v)));
                 // as the clipper packs it: the rank's top bits above the node
-                queue[v] = (rank.to_bits() << 1) >> 32 << 32 | v as u64;
+                queue.set(v, (rank.to_bits() << 1) >> 32 << 32 | v as u64);
             }
         };
-        let seed = |w: &Self, from: usize, queue: &mut [u64; N]| {
+        let seed = |w: &Self, from: usize, queue: &mut Queue<N>| {
             let mut v = from;
             for _ in 0..w.len {
                 push(w, v, queue);
@@ -194,9 +194,7 @@ impl<const N: usize, M: Mask> Walk<'_, N, M> {
         seed(self, start, &mut queue);
         let (mut last, mut rescanned) = (start, false);
         while self.len > 3 {
-            let queued = &queue[..self.s.nodes];
-            let (item, v) = (queued.iter().zip(0..).min()).map_or((u64::MAX, 0), |(&k, v)| (k, v));
-            if item == u64::MAX {
+            let Some(v) = queue.first(self.s.nodes) else {
                 // none queued: once more over the whole ring, then the pipeline decides
                 if rescanned {
                     return None;
@@ -204,8 +202,8 @@ impl<const N: usize, M: Mask> Walk<'_, N, M> {
                 rescanned = true;
                 seed(self, last, &mut queue);
                 continue;
-            }
-            queue[v] = u64::MAX;
+            };
+            queue.set(v, u64::MAX);
             if !self.is_ear(v) {
                 continue;
             }
@@ -309,5 +307,52 @@ impl<const N: usize, M: Mask> Walk<'_, N, M> {
     fn emit(&mut self, a: usize, b: usize, c: usize) {
         let vertex = |v: usize| u32::from(self.s.vertex[v]);
         self.out.push([vertex(a), vertex(b), vertex(c)]);
+    }
+}
+
+/// The quality walk's queue over `N` nodes: each node's key, `u64::MAX` for none; the
+/// keys hold their node in their low bits, so the least key names its node. Up to 64
+/// nodes the least is found by a scan; more keep a tournament tree, at each inner entry
+/// the least key below it, so that the least of all is read at the root and a key
+/// changes in log₂ N steps (`N` is a power of two).
+struct Queue<const N: usize> {
+    /// Entries N.. are the nodes' keys; with the tree, entry 1 is the root, and entry i's
+    /// children are 2i and 2i + 1.
+    tree: [[u64; N]; 2],
+}
+
+impl<const N: usize> Queue<N> {
+    /// Whether the queue keeps the tree.
+    const TREE: bool = N > 64;
+
+    fn new() -> Self {
+        Queue {
+            tree: [[u64::MAX; N]; 2],
+        }
+    }
+
+    fn get(&self, i: usize) -> u64 {
+        self.tree[i / N][i % N]
+    }
+
+    /// Sets node `v`'s key.
+    fn set(&mut self, v: usize, key: u64) {
+        self.tree[1][v] = key;
+        let mut i = N + v;
+        while Self::TREE && i > 1 {
+            i /= 2;
+            let least = self.get(2 * i).min(self.get(2 * i + 1));
+            self.tree[0][i] = least;
+        }
+    }
+
+    /// The node with the least key among the first `nodes`, if any has one.
+    fn first(&self, nodes: usize) -> Option<usize> {
+        let least = if Self::TREE {
+            self.tree[0][1]
+        } else {
+            (self.tree[1][..nodes].iter().min()).map_or(u64::MAX, |&k| k)
+        };
+        (least != u64::MAX).then_some((least & 0xffff_ffff) as usize)
     }
 }

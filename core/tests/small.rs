@@ -581,12 +581,16 @@ fn holes_along_edges_agree_and_mostly_take_the_stage() {
 /// Touches the stage must take or leave exactly as the pipeline does: a hole crossing
 /// its outer ring at two shared vertices (partly outside it: strict mode refuses it); two
 /// holes touching at the rightmost vertex of both (the hole they make is bridged from
-/// its clockwise visit there); a hole running along its outer ring's edge from a shared
-/// vertex; a ring touching itself: pinched into two polygons, crossing itself round a
-/// lobe turning the same way (refused), or round a hole (once at the hole's rightmost
-/// vertex, where the face walk keeps it one boundary); three holes meeting at one point;
-/// two holes touching each other inside the outer ring's edge (split there once); a hole
-/// touching its outer ring twice, which cuts it in two polygons. Each in every quarter turn and winding, both nesting conventions.
+/// its clockwise visit there); holes running along their outer ring's edge (from a shared
+/// vertex, inside the edge, along all of it) or along each other (a whole edge, part of
+/// one), which leave walls; a crack into a hole; a square hole in the outer ring's corner
+/// (every edge there walked both ways) and a triangle filling it (every vertex on the outer
+/// ring: left to the pipeline); a ring touching itself: pinched into two polygons,
+/// crossing itself round a lobe turning the same way (refused), or round a hole (once at
+/// the hole's rightmost vertex, where the face walk keeps it one boundary); three holes
+/// meeting at one point; two holes touching each other inside the outer ring's edge
+/// (split there once); a hole touching its outer ring twice, which cuts it in two
+/// polygons. Each in every quarter turn and winding, both nesting conventions.
 #[test]
 fn touches_decided_as_the_pipeline_decides() {
     let square = vec![[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]];
@@ -845,7 +849,8 @@ fn spikes_dropped_as_the_pipeline_drops_them() {
 }
 
 /// Every polygon of up to 140 vertices of the glyph datasets, earcut's fixtures and the
-/// named corpus cases (bridging's special cases among them), in four rotations: the stage gives what the pipeline gives, and takes every glyph with
+/// named corpus cases (bridging's special cases among them), in four rotations: the stage
+/// gives what the pipeline gives, and takes every glyph with
 /// holes that fits it.
 #[test]
 fn glyphs_and_earcut_fixtures_agree() {

@@ -37,11 +37,12 @@
 //! Whatever the pipeline would treat specially makes the stage give up (`false`) before
 //! writing anything the pipeline would not: non-finite coordinates, a spike in lenient
 //! mode or one hiding a crossing, a ring left with fewer than three vertices (but for the
-//! only ring in strict mode, dropped whole as `clean` drops it), two edges crossing, more than eight nodes at one
-//! position, a ring touching itself at its rightmost vertex, touching rings in lenient
-//! mode or joined in a way `touch` decides by another rule, a ring with every vertex on
-//! other rings, rings nested otherwise, a bridge target the pipeline would choose by a
-//! fallback, a clockwise last triangle or a ring the walk cannot finish. The
+//! only ring in strict mode, dropped whole as `clean` drops it), two edges crossing, more
+//! than eight nodes at one position, a ring touching itself at its rightmost vertex,
+//! touching rings in lenient mode or joined in a way `touch` decides by another rule, a
+//! ring with every vertex on other rings, rings nested otherwise, a bridge target the
+//! pipeline would choose by a fallback, a clockwise last triangle or a ring the walk
+//! cannot finish. The
 //! triangulator then runs the pipeline from the start, which finds and reports the same
 //! things as without this stage. `core/tests/small.rs` holds the two to the same output.
 

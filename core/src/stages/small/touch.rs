@@ -437,7 +437,6 @@ fn retrace<const N: usize, M: Mask>(s: &mut Scratch<N, M>, mut live: M) -> bool 
     let mut cycle = [u8::MAX; N];
     let mut input = [0usize; RINGS];
     let (mut rings, mut holes) = (0, 0u8);
-    let mut walls = M::NONE;
     while live != M::NONE {
         let n = live.lowest();
         if rings == RINGS {
@@ -446,10 +445,8 @@ fn retrace<const N: usize, M: Mask>(s: &mut Scratch<N, M>, mut live: M) -> bool 
         let mut len = 0usize;
         let mut at = RightmostVisit::new(n, s.p[n]);
         let mut m = n;
-        let mut cycle_nodes = M::NONE;
         loop {
             live &= !bit::<M>(m);
-            cycle_nodes |= bit(m);
             cycle[m] = rings as u8;
             len += 1;
             at.visit(m, s.p[m], orient2d(s.p[s.prev(m)], s.p[m], s.p[s.next(m)]));
@@ -463,10 +460,14 @@ fn retrace<const N: usize, M: Mask>(s: &mut Scratch<N, M>, mut live: M) -> bool 
         }
         if at.flat {
             // a wall (a segment walked both ways): it encloses nothing, and `touch` leaves
-            // it dead
-            walls |= cycle_nodes;
-            for v in super::members(cycle_nodes) {
-                cycle[v] = u8::MAX;
+            // it dead (its nodes in no cycle: `u8::MAX`)
+            let mut m = n;
+            loop {
+                cycle[m] = u8::MAX;
+                m = s.next(m);
+                if m == n {
+                    break;
+                }
             }
             continue;
         }
@@ -518,7 +519,7 @@ fn retrace<const N: usize, M: Mask>(s: &mut Scratch<N, M>, mut live: M) -> bool 
         let m = usize::from(s.rightmost[h]);
         kind(h) == 0
             || s.touched & bit(m) == M::NONE
-            || others(s, m).all(|w| usize::from(cycle[w]) == h || walls & bit(w) != M::NONE)
+            || others(s, m).all(|w| usize::from(cycle[w]) == h || cycle[w] == u8::MAX)
     })
 }
 

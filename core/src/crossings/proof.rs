@@ -200,6 +200,28 @@ fn contact(
         return meet(pool, e, f, turns_proper);
     }
     let (a, b, c, d) = (pool.p(e.from), pool.p(e.to), pool.p(f.from), pool.p(f.to));
+    // An end in common (rings touching at a vertex; no edge has both ends at one
+    // position): unless f runs on along e's line, they meet there only, and the nodes
+    // there are listed without the four signs below (two of which would be of a repeated
+    // point). On one line, the collinear case below lists the rest.
+    let common = if a == c || a == d {
+        Some((a, if a == c { d } else { c }))
+    } else if b == c || b == d {
+        Some((b, if b == c { d } else { c }))
+    } else {
+        None
+    };
+    if let Some((x, far)) = common {
+        let other = if x == a { b } else { a };
+        if orient2d(x, other, far) != Collinear {
+            for n in [e.from, e.to, f.from, f.to] {
+                if pool.p(n) == x {
+                    shared.push(n);
+                }
+            }
+            return false;
+        }
+    }
     let (o1, o2) = (orient2d(a, b, c), orient2d(a, b, d));
     if o1 != Collinear && o1 == o2 {
         return false; // f lies strictly on one side of e's line
@@ -1078,13 +1100,71 @@ mod tests {
         assert!(!apart(&[SQUARE, &[(0., 5.), (3., 7.), (3., 3.)]]));
     }
 
+    /// What [`edges_meet_at_vertices`] proves about `rings`, asserted to be what the sweep
+    /// finds: no crossing, the same vertices inside edges and the same nodes at shared
+    /// positions, unless not proved (which it must be where the sweep finds a crossing).
+    fn agrees_with_sweep(rings: &[Vec<(f64, f64)>]) -> Contact {
+        use crate::crossings::sweep::{self, SweepScratch};
+        let refs: Vec<&[(f64, f64)]> = rings.iter().map(Vec::as_slice).collect();
+        let (pool, starts) = build(&refs);
+        let (mut touches, mut shared, mut nodes) = (Vec::new(), Vec::new(), Vec::new());
+        let contact = edges_meet_at_vertices(
+            &pool,
+            &starts,
+            &mut ProofScratch::default(),
+            &mut nodes,
+            false,
+            &mut touches,
+            &mut shared,
+        );
+        let mut scratch = SweepScratch::default();
+        let (mut swept, mut crossings) = (Vec::new(), Vec::new());
+        sweep::sweep(
+            &pool,
+            &starts,
+            &mut scratch,
+            false,
+            &mut swept,
+            &mut crossings,
+        );
+        swept.sort_unstable_by_key(|t| (t.edge, t.vertex));
+        swept.dedup();
+        // the sweep's nodes at shared positions, grouped as `shared` is
+        let order = &scratch.order;
+        let mut groups: Vec<NodeId> = (0..order.len())
+            .filter(|&i| {
+                let p = pool.p(order[i]);
+                (i > 0 && pool.p(order[i - 1]) == p)
+                    || (i + 1 < order.len() && pool.p(order[i + 1]) == p)
+            })
+            .map(|i| order[i])
+            .collect();
+        groups.sort_unstable_by(|&a, &b| cmp_xy(pool.p(a), pool.p(b)).then(a.cmp(&b)));
+        let case = format!("{rings:?}");
+        match contact {
+            Contact::NotProved => {}
+            Contact::Apart => {
+                assert!(crossings.is_empty() && swept.is_empty(), "{case}");
+                assert!(groups.is_empty(), "{case}");
+            }
+            Contact::AtVertices => {
+                assert!(crossings.is_empty(), "{case}");
+                assert_eq!(touches, swept, "{case}");
+                assert_eq!(shared, groups, "{case}");
+            }
+        }
+        if !crossings.is_empty() {
+            assert_eq!(contact, Contact::NotProved, "{case}");
+        }
+        contact
+    }
+
     /// Random rings on a 6 × 6 grid (shared vertices, T-junctions, collinear overlaps
     /// and crossings everywhere), with and without collinear turns: wherever the proof
     /// says the edges meet only at vertices, it lists what the sweep finds; where the
     /// sweep finds a crossing, it proves nothing.
     #[test]
     fn contacts_at_vertices_are_what_the_sweep_finds() {
-        use crate::crossings::sweep::{self, SweepScratch};
         let mut next = xorshift(0x5eed_cafe_f00d_d00d);
         let (mut apart, mut at_vertices, mut not_proved) = (0, 0, 0);
         for _ in 0..40_000 {
@@ -1104,61 +1184,35 @@ mod tests {
                     rings.push(ring);
                 }
             }
-            let refs: Vec<&[(f64, f64)]> = rings.iter().map(Vec::as_slice).collect();
-            let (pool, starts) = build(&refs);
-            let (mut touches, mut shared, mut nodes) = (Vec::new(), Vec::new(), Vec::new());
-            let contact = edges_meet_at_vertices(
-                &pool,
-                &starts,
-                &mut ProofScratch::default(),
-                &mut nodes,
-                false,
-                &mut touches,
-                &mut shared,
-            );
-            let mut scratch = SweepScratch::default();
-            let (mut swept, mut crossings) = (Vec::new(), Vec::new());
-            sweep::sweep(
-                &pool,
-                &starts,
-                &mut scratch,
-                false,
-                &mut swept,
-                &mut crossings,
-            );
-            swept.sort_unstable_by_key(|t| (t.edge, t.vertex));
-            swept.dedup();
-            // the sweep's nodes at shared positions, grouped as `shared` is
-            let order = &scratch.order;
-            let mut groups: Vec<NodeId> = (0..order.len())
-                .filter(|&i| {
-                    let p = pool.p(order[i]);
-                    (i > 0 && pool.p(order[i - 1]) == p)
-                        || (i + 1 < order.len() && pool.p(order[i + 1]) == p)
-                })
-                .map(|i| order[i])
-                .collect();
-            groups.sort_unstable_by(|&a, &b| cmp_xy(pool.p(a), pool.p(b)).then(a.cmp(&b)));
-            let case = format!("{rings:?}");
-            match contact {
+            match agrees_with_sweep(&rings) {
                 Contact::NotProved => not_proved += 1,
-                Contact::Apart => {
-                    apart += 1;
-                    assert!(crossings.is_empty() && swept.is_empty(), "{case}");
-                    assert!(groups.is_empty(), "{case}");
-                }
-                Contact::AtVertices => {
-                    at_vertices += 1;
-                    assert!(crossings.is_empty(), "{case}");
-                    assert_eq!(touches, swept, "{case}");
-                    assert_eq!(shared, groups, "{case}");
-                }
-            }
-            if !crossings.is_empty() {
-                assert_eq!(contact, Contact::NotProved, "{case}");
+                Contact::Apart => apart += 1,
+                Contact::AtVertices => at_vertices += 1,
             }
         }
         eprintln!("{apart} apart, {at_vertices} at vertices, {not_proved} not proved");
         assert!(apart > 500 && at_vertices > 500 && not_proved > 500);
+    }
+
+    #[test]
+    fn edges_with_an_end_in_common_along_one_line_list_every_contact() {
+        // the outer square, and a ring with an edge from one of its corners along its
+        // bottom edge (to the other corner, or short of it, either way), or off it
+        let square = vec![(0.0, 0.0), (4.0, 0.0), (4.0, 4.0), (0.0, 4.0)];
+        let cases = [
+            vec![(0.0, 0.0), (4.0, 0.0), (2.0, 2.0)],
+            vec![(4.0, 0.0), (0.0, 0.0), (2.0, 2.0)],
+            vec![(0.0, 0.0), (2.0, 0.0), (2.0, 2.0)],
+            vec![(4.0, 0.0), (2.0, 2.0), (2.0, 0.0)],
+            vec![(0.0, 0.0), (2.0, 1.0), (1.0, 2.0)],
+        ];
+        for ring in cases {
+            for rings in [
+                vec![square.clone(), ring.clone()],
+                vec![ring, square.clone()],
+            ] {
+                assert_eq!(agrees_with_sweep(&rings), Contact::AtVertices, "{rings:?}");
+            }
+        }
     }
 }

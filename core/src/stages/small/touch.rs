@@ -527,8 +527,9 @@ fn retrace<const N: usize, M: Mask>(s: &mut Scratch<N, M>, mut live: M) -> bool 
 /// its first vertex (from its start) at no position of `d` (no vertex lies inside an
 /// edge: such edges were split), false when there is none.
 fn lies_inside<const N: usize, M: Mask>(s: &Scratch<N, M>, c: usize, d: usize) -> bool {
-    let on_d = |q: Point| s.ring(d).any(|v| s.p[v] == q);
-    let Some(v) = s.ring(c).find(|&v| !on_d(s.p[v])) else {
+    // (a node no other node shares a position with lies on no other cycle)
+    let on_d = |v: usize| s.touched & bit(v) != M::NONE && s.ring(d).any(|w| s.p[w] == s.p[v]);
+    let Some(v) = s.ring(c).find(|&v| !on_d(v)) else {
         return false;
     };
     winding(s, d, s.p[v]) % 2 != 0

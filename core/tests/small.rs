@@ -530,8 +530,8 @@ fn holes_touching_at_vertices_agree_and_take_the_stage() {
 /// whole sides with its neighbours and the outer ring), a triangle on the cell's bottom
 /// side, or a smaller square standing on it; every ring either way round, in any order,
 /// in every quarter turn, f64 and f32. The stage must give what the pipeline gives, take
-/// every grid without full squares, and two in three with them (full squares may lie
-/// wholly on their neighbours and the outer ring: their nesting is `nest`'s).
+/// every grid without full squares, and nineteen in twenty with them (a full square may
+/// have every vertex on its neighbours and the outer ring).
 #[test]
 fn holes_along_edges_agree_and_mostly_take_the_stage() {
     let mut rng = Rng(0xa1_0e6e);
@@ -570,10 +570,11 @@ fn holes_along_edges_agree_and_mostly_take_the_stage() {
             taken[usize::from(full)] += took;
         }
     }
-    // (without full squares every grid is taken; full squares lie wholly on their
-    // neighbours and the outer ring, and their nesting is `nest`'s)
+    // (without full squares every grid is taken; a full square may have every vertex on
+    // its neighbours and the outer ring, and is nested at a vertex off the ring it is
+    // tested against; the few left go to the pipeline for other reasons)
     assert!(
-        cases[0] > 1000 && taken[0] == cases[0] && 3 * taken[1] > 2 * cases[1],
+        cases[0] > 1000 && taken[0] == cases[0] && 20 * taken[1] > 19 * cases[1],
         "the stage took {taken:?} of {cases:?}"
     );
 }

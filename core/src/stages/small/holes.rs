@@ -19,11 +19,18 @@ pub(super) fn nest<const N: usize, M: Mask>(s: &mut Scratch<N, M>, nesting: Nest
     let mut outer = None;
     for b in 0..s.rings {
         // (a vertex where no other ring touches: it lies on no other ring)
-        let Some(v) = s.ring(b).find(|&v| s.touched & bit(v) == M::NONE) else {
-            return false;
-        };
-        let q = s.p[v];
-        let depth = (0..s.rings).filter(|&r| r != b && inside(s, r, q)).count();
+        let untouched = s.ring(b).find(|&v| s.touched & bit(v) == M::NONE);
+        let mut depth = 0;
+        for r in (0..s.rings).filter(|&r| r != b) {
+            let within = match untouched {
+                Some(v) => inside(s, r, s.p[v]),
+                None => match contains(s, r, b) {
+                    Some(within) => within,
+                    None => return false,
+                },
+            };
+            depth += usize::from(within);
+        }
         match depth {
             0 if outer.is_none() => outer = Some(b),
             1 => {}
@@ -44,6 +51,16 @@ pub(super) fn nest<const N: usize, M: Mask>(s: &mut Scratch<N, M>, nesting: Nest
         s.hole_rings |= 1 << r;
     }
     true
+}
+
+/// Whether ring `r` contains ring `b`, every vertex of which some other ring touches: by
+/// crossing parity at b's first vertex at no position of r, which lies on none of r's
+/// edges (a vertex inside an edge split it); the rings do not cross, so it decides for
+/// all of b. `None` where every vertex of b lies at a position of r.
+fn contains<const N: usize, M: Mask>(s: &Scratch<N, M>, r: usize, b: usize) -> Option<bool> {
+    let on_r = |v: usize| s.ring(r).any(|w| s.p[w] == s.p[v]);
+    let v = s.ring(b).find(|&v| !on_r(v))?;
+    Some(inside(s, r, s.p[v]))
 }
 
 /// Whether `q`, on no edge of ring `r`, lies inside it: the ring winds round it (`nest`'s

@@ -21,8 +21,9 @@
 //!    nodes at a shared position take the lowest vertex index there.
 //! 4. **Orient** every ring counter-clockwise by the turn at its rightmost-lowest vertex.
 //! 5. **Nest** (`holes`): one ring must contain all the others, and none of those another
-//!    (by exact crossing parity at a vertex no other ring touches); the holes are turned
-//!    clockwise; rings must not cross where they touch.
+//!    (by exact crossing parity at a vertex no other ring touches, or, where every vertex
+//!    of a ring is touched, at one off the ring it is tested against); the holes are
+//!    turned clockwise; rings must not cross where they touch.
 //! 6. **Join and bridge**: rings touching are joined as `touch` joins them (`touch`), and
 //!    every hole left is bridged (`holes`) to the polygon around it as `bridge` does: by
 //!    descending rightmost x, the ray's nearest hit, the same visible vertex, the same two
@@ -40,7 +41,7 @@
 //! only ring in strict mode, dropped whole as `clean` drops it), two edges crossing, more
 //! than eight nodes at one position, a ring touching itself at its rightmost vertex,
 //! touching rings in lenient mode or joined in a way `touch` decides by another rule, a
-//! ring with every vertex on other rings, rings nested otherwise, a bridge target the
+//! ring with every vertex on one other ring, rings nested otherwise, a bridge target the
 //! pipeline would choose by a fallback, a clockwise last triangle or a ring the walk
 //! cannot finish. The
 //! triangulator then runs the pipeline from the start, which finds and reports the same

@@ -596,7 +596,7 @@ fn holes_along_edges_agree_and_mostly_take_the_stage() {
 fn touches_decided_as_the_pipeline_decides() {
     let square = vec![[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]];
     type Rings = Vec<Vec<[f64; 2]>>;
-    let cases: [(&str, Rings, bool); 17] = [
+    let cases: [(&str, Rings, bool); 22] = [
         (
             "crossing",
             vec![
@@ -677,7 +677,105 @@ fn touches_decided_as_the_pipeline_decides() {
             // (every vertex of the hole on the outer ring: its nesting is `nest`'s)
             "a hole filling a corner",
             vec![square.clone(), vec![[0.0, 0.0], [4.0, 0.0], [0.0, 4.0]]],
+            true,
+        ),
+        (
+            "a hole cancelling a lobe",
+            vec![
+                vec![
+                    [1.0, 0.0],
+                    [2.0, 0.0],
+                    [2.0, 1.0],
+                    [3.0, 1.0],
+                    [3.0, 2.0],
+                    [2.0, 2.0],
+                    [2.0, 1.0],
+                    [1.0, 1.0],
+                ],
+                vec![[2.0, 1.0], [3.0, 1.0], [3.0, 2.0], [2.0, 2.0]],
+            ],
+            true,
+        ),
+        (
+            "a hole cancelling a lobe, with a spike poking out of it",
+            vec![
+                vec![
+                    [1.0, 0.0],
+                    [2.0, 0.0],
+                    [2.0, 1.0],
+                    [3.0, 1.0],
+                    [3.0, 2.0],
+                    [2.0, 2.0],
+                    [2.0, 1.0],
+                    [1.0, 1.0],
+                ],
+                vec![
+                    [2.0, 1.0],
+                    [3.0, 1.0],
+                    [3.0, 2.0],
+                    [4.0, 3.0],
+                    [3.0, 2.0],
+                    [2.0, 2.0],
+                ],
+            ],
             false,
+        ),
+        (
+            "the lobe of a ring pinched round it, laid in",
+            vec![
+                vec![
+                    [0.0, 0.0],
+                    [5.0, 0.0],
+                    [3.0, 3.0],
+                    [7.0, 3.0],
+                    [5.0, 0.0],
+                    [10.0, 0.0],
+                    [10.0, 10.0],
+                    [0.0, 10.0],
+                ],
+                vec![[5.0, 0.0], [3.0, 3.0], [7.0, 3.0]],
+            ],
+            false,
+        ),
+        (
+            "a triangle filling a notch",
+            vec![
+                vec![
+                    [0.0, 0.0],
+                    [10.0, 0.0],
+                    [10.0, 10.0],
+                    [5.0, 5.0],
+                    [0.0, 10.0],
+                ],
+                vec![[0.0, 10.0], [5.0, 5.0], [10.0, 10.0]],
+            ],
+            false,
+        ),
+        (
+            "earcut's issue149: a hole cancelling a lobe behind a spike",
+            vec![
+                vec![
+                    [1888.0, 5504.0],
+                    [1872.0, 5504.0],
+                    [1872.0, 5536.0],
+                    [1856.0, 5536.0],
+                    [1856.0, 5520.0],
+                    [1840.0, 5520.0],
+                    [1840.0, 5504.0],
+                    [1856.0, 5504.0],
+                    [1856.0, 5520.0],
+                    [1872.0, 5520.0],
+                    [1872.0, 5504.0],
+                    [1888.0, 5504.0],
+                ],
+                vec![
+                    [1856.0, 5520.0],
+                    [1856.0, 5536.0],
+                    [1872.0, 5536.0],
+                    [1872.0, 5520.0],
+                ],
+            ],
+            true,
         ),
         (
             "pinched into two polygons",

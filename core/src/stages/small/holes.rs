@@ -7,7 +7,7 @@
 use core::cmp::Ordering;
 
 use super::{bit, members, reverse, ring_mask, winding, Mask, Scratch, RINGS};
-use crate::geom::{compare_hits, corner_contains, left_of, LeastAngle, Point};
+use crate::geom::{cmp_around, compare_hits, corner_contains, left_of, on_ray, LeastAngle, Point};
 use crate::Nesting;
 
 /// Step 5: decides the rings' roles by containment — exactly one ring contains every
@@ -56,11 +56,107 @@ pub(super) fn nest<const N: usize, M: Mask>(s: &mut Scratch<N, M>, nesting: Nest
 /// Whether ring `r` contains ring `b`, every vertex of which some other ring touches: by
 /// crossing parity at b's first vertex at no position of r, which lies on none of r's
 /// edges (a vertex inside an edge split it); the rings do not cross, so it decides for
-/// all of b. `None` where every vertex of b lies at a position of r.
+/// all of b. Where every vertex of b lies at a position of r, as `nest` decides a ring
+/// lying on another ([`on_ring`]). `None` where the stage does not decide.
 fn contains<const N: usize, M: Mask>(s: &Scratch<N, M>, r: usize, b: usize) -> Option<bool> {
     let on_r = |v: usize| s.ring(r).any(|w| s.p[w] == s.p[v]);
-    let v = s.ring(b).find(|&v| !on_r(v))?;
-    Some(inside(s, r, s.p[v]))
+    match s.ring(b).find(|&v| !on_r(v)) {
+        Some(v) => Some(inside(s, r, s.p[v])),
+        None => on_ring(s, r, b),
+    }
+}
+
+/// `nest`'s `depth_of` for ring `r` and ring `b`, every vertex of which lies at a
+/// position of r: decided at b's rightmost vertex, then at each one after it, by b's first
+/// edge there off r and off every other ring ([`locally_inside`]); then again from the
+/// rightmost by b's first edge off r alone. Where no vertex decides, b lies on r's
+/// boundary with its corners inside r's: r contains it (the pipeline then requires their
+/// depths to differ by one, as the stage's roles do) — unless cleaning dropped a vertex of
+/// b, which `nest` would look at: `None`.
+fn on_ring<const N: usize, M: Mask>(s: &Scratch<N, M>, r: usize, b: usize) -> Option<bool> {
+    let first = usize::from(s.rightmost[b]);
+    for clear in [true, false] {
+        let mut v = first;
+        loop {
+            if let Some(inside) = locally_inside(s, r, b, v, clear) {
+                return Some(inside);
+            }
+            v = s.next(v);
+            if v == first {
+                break;
+            }
+        }
+    }
+    let input = usize::from(s.first[s.rings]);
+    let loaded = usize::from(s.first[b + 1] - s.first[b]);
+    (s.ring(b).filter(|&v| v < input).count() == loaded).then_some(true)
+}
+
+/// `nest`'s `locally_inside` for ring `r` at b's vertex `v`, on r's position: by b's first
+/// edge at v (to its successor, then from its predecessor) not along r — and, if `clear`,
+/// along no other ring — whether the sector just counter-clockwise of it lies inside r.
+/// With both of b's edges along r: outside if r leaves any part of b's corner there.
+/// `None` where v does not decide.
+fn locally_inside<const N: usize, M: Mask>(
+    s: &Scratch<N, M>,
+    r: usize,
+    b: usize,
+    v: usize,
+    clear: bool,
+) -> Option<bool> {
+    let o = s.p[v];
+    let (vn, vp) = (s.p[s.next(v)], s.p[s.prev(v)]);
+    // the far ends of ring q's edges through o
+    let ends = |q: usize| {
+        (s.ring(q))
+            .filter(move |&w| s.p[w] == o)
+            .flat_map(move |w| [s.p[s.next(w)], s.p[s.prev(w)]])
+    };
+    let along = |q: usize, d: Point| ends(q).any(|e| on_ray(o, e, d));
+    // r's winding number just above the ray from o towards +x: its edges through o
+    // cross no such ray (nor count in `winding`: o lies on their lines)
+    let base = winding(s, r, o);
+    let mut blocked = false;
+    for d in [vn, vp] {
+        if along(r, d) {
+            continue;
+        }
+        if !(clear && (0..s.rings).any(|q| q != b && q != r && along(q, d))) {
+            return Some(winding_after(s, r, o, d, base) > 0);
+        }
+        blocked = true;
+    }
+    if blocked {
+        return None;
+    }
+    // both along r: every sector of b's corner, from its first edge and from each of r's
+    // edges inside the corner, must lie inside r
+    let inside_corner = |e: Point| e != o && corner_contains(o, vn, vp, e) == Some(true);
+    let mut sectors = core::iter::once(vn).chain(ends(r).filter(|&e| inside_corner(e)));
+    sectors
+        .any(|d| winding_after(s, r, o, d, base) <= 0)
+        .then_some(false)
+}
+
+/// The winding number of ring `r` in the sector just counter-clockwise of the direction
+/// from `o`, a position of r, to `d`: `base`, r's winding number just above the ray from
+/// `o` towards +x, plus one for each edge of r leaving o, minus one for each arriving,
+/// whose direction lies counter-clockwise from that ray up to d's (as `nest`'s
+/// `locally_inside` counts).
+fn winding_after<const N: usize, M: Mask>(
+    s: &Scratch<N, M>,
+    r: usize,
+    o: Point,
+    d: Point,
+    base: i64,
+) -> i64 {
+    let counts =
+        |e: Point| i64::from(e != o && !(e.y == o.y && e.x > o.x) && cmp_around(o, e, d).is_le());
+    let mut w = base;
+    for v in s.ring(r).filter(|&v| s.p[v] == o) {
+        w += counts(s.p[s.next(v)]) - counts(s.p[s.prev(v)]);
+    }
+    w
 }
 
 /// Whether `q`, on no edge of ring `r`, lies inside it: the ring winds round it (`nest`'s

@@ -1,8 +1,8 @@
 //! Steps 5 and 6 of the small stage: which ring is the polygon's boundary and which are
-//! its holes (as `nest` decides them, for rings that meet nowhere), and the bridges from
-//! the holes to the ring around them (as `bridge` chooses them). Whatever the pipeline
-//! would decide by a rule this stage does not repeat — a hole inside a hole, several
-//! outer rings, a target picked by a fallback — hands the input back.
+//! its holes (as `nest` decides them, for rings that meet nowhere or only touch), and the
+//! bridges from the holes to the ring around them (as `bridge` chooses them). Whatever the
+//! pipeline would decide by a rule this stage does not repeat — a hole inside a hole,
+//! several outer rings, a target picked by a fallback — hands the input back.
 
 use core::cmp::Ordering;
 
@@ -13,8 +13,9 @@ use crate::Nesting;
 /// Step 5: decides the rings' roles by containment — exactly one ring contains every
 /// other, and no other contains another — and turns the holes clockwise. `false`
 /// otherwise, or when `FirstIsOuter` names another ring the boundary (the pipeline then
-/// reports or repairs it). The rings meet nowhere, so one vertex of a ring decides for
-/// all of it, and it lies on no other ring: crossing parity is exact.
+/// reports or repairs it). The rings do not cross, so one vertex of a ring on no other
+/// ring decides for all of it (crossing parity is exact there); a ring every vertex of
+/// which another touches is decided against each ring by [`contains`].
 pub(super) fn nest<const N: usize, M: Mask>(s: &mut Scratch<N, M>, nesting: Nesting) -> bool {
     let mut outer = None;
     for b in 0..s.rings {

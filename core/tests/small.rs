@@ -579,6 +579,52 @@ fn holes_along_edges_agree_and_mostly_take_the_stage() {
     );
 }
 
+/// Holes with every vertex on the outer ring: triangles and quadrilaterals on the points
+/// of a grid square's sides (edges along the sides, or across the square), and polygons
+/// on the vertices of a ring pinched into two lobes (a hole cancelling a lobe, a triangle
+/// across one); in any order, either way round, every quarter turn, f64 and f32. Many
+/// cross each other (both refuse them); the stage must give what the pipeline gives, and
+/// take a fair share of the rest.
+#[test]
+fn holes_on_their_outer_ring_agree_and_take_the_stage() {
+    let mut rng = Rng(0x0e_417e);
+    let mut both = (pair(), pair());
+    let lobes = vec![
+        [10.0, 0.0],
+        [20.0, 0.0],
+        [20.0, 10.0],
+        [30.0, 10.0],
+        [30.0, 20.0],
+        [20.0, 20.0],
+        [20.0, 10.0],
+        [10.0, 10.0],
+    ];
+    let (mut cases, mut taken) = (0, 0);
+    for case in 0..1500 {
+        let outer = if case % 3 == 2 {
+            lobes.clone()
+        } else {
+            grid_square(2 + case % 2)
+        };
+        let mut rings = vec![outer.clone()];
+        for _ in 0..1 + rng.below(2) {
+            let n = 3 + rng.below(2);
+            let mut hole: Vec<[f64; 2]> = Vec::new();
+            while hole.len() < n {
+                let p = outer[rng.below(outer.len())];
+                if !hole.contains(&p) {
+                    hole.push(p);
+                }
+            }
+            rings.push(hole);
+        }
+        let took = shuffled_agree(&mut both, &mut rng, rings, &format!("on outer {case}"));
+        cases += 2;
+        taken += took;
+    }
+    assert!(5 * taken > cases, "the stage took {taken} of {cases}");
+}
+
 /// Touches the stage must take or leave exactly as the pipeline does: a hole crossing
 /// its outer ring at two shared vertices (partly outside it: strict mode refuses it); two
 /// holes touching at the rightmost vertex of both (the hole they make is bridged from

@@ -13,24 +13,16 @@ use crate::Nesting;
 /// Step 5: decides the rings' roles by containment — exactly one ring contains every
 /// other, and no other contains another — and turns the holes clockwise. `false`
 /// otherwise, or when `FirstIsOuter` names another ring the boundary (the pipeline then
-/// reports or repairs it). The rings do not cross, so one vertex of a ring on no other
-/// ring decides for all of it (crossing parity is exact there); a ring every vertex of
-/// which another touches is decided against each ring by [`contains`].
+/// reports or repairs it). Each ring is tested against each other one by [`contains`].
 pub(super) fn nest<const N: usize, M: Mask>(s: &mut Scratch<N, M>, nesting: Nesting) -> bool {
     let mut outer = None;
     for b in 0..s.rings {
-        // (a vertex where no other ring touches: it lies on no other ring)
-        let untouched = s.ring(b).find(|&v| s.touched & bit(v) == M::NONE);
         let mut depth = 0;
         for r in (0..s.rings).filter(|&r| r != b) {
-            let within = match untouched {
-                Some(v) => inside(s, r, s.p[v]),
-                None => match contains(s, r, b) {
-                    Some(within) => within,
-                    None => return false,
-                },
-            };
-            depth += usize::from(within);
+            match contains(s, r, b) {
+                Some(within) => depth += usize::from(within),
+                None => return false,
+            }
         }
         match depth {
             0 if outer.is_none() => outer = Some(b),
@@ -54,89 +46,80 @@ pub(super) fn nest<const N: usize, M: Mask>(s: &mut Scratch<N, M>, nesting: Nest
     true
 }
 
-/// Whether ring `r` contains ring `b`, every vertex of which some other ring touches: by
-/// crossing parity at b's first vertex at no position of r, which lies on none of r's
-/// edges (a vertex inside an edge split it); the rings do not cross, so it decides for
-/// all of b. Where every vertex of b lies at a position of r, as `nest` decides a ring
-/// lying on another ([`on_ring`]). `None` where the stage does not decide.
+/// Whether ring `r` contains ring `b`, as `nest` decides it; `None` where the stage does
+/// not decide.
+///
+/// Where b touches r nowhere, b's boundary lies inside r or outside it (the rings do not
+/// cross), and crossing parity at any vertex of b decides (exact: it lies on none of r's
+/// edges). Where they touch, `nest` decides at the first vertex of b, from its rightmost,
+/// that can: at a vertex off r by parity, at one on r by b's edges there
+/// ([`locally_inside`]); where none can, b lies on r's boundary with its corners inside
+/// r's, and r contains it (unless cleaning dropped a vertex of b, which `nest` would look
+/// at). Every vertex that can decide is asked here, and they must agree, or the input
+/// goes back: where b's boundary is partly inside r (holes overlapping at a corner of
+/// their outer ring, say, which the check of shared positions does not see), `nest`'s
+/// answer is the first vertex's, and the pipeline refuses what follows from it.
 fn contains<const N: usize, M: Mask>(s: &Scratch<N, M>, r: usize, b: usize) -> Option<bool> {
-    let on_r = |v: usize| s.ring(r).any(|w| s.p[w] == s.p[v]);
-    match s.ring(b).find(|&v| !on_r(v)) {
-        Some(v) => Some(inside(s, r, s.p[v])),
-        None => on_ring(s, r, b),
+    let on_r = |v: usize| s.touched & bit(v) != M::NONE && s.ring(r).any(|w| s.p[w] == s.p[v]);
+    if !s.ring(b).any(on_r) {
+        return Some(inside(s, r, s.p[usize::from(s.start[b])]));
     }
-}
-
-/// `nest`'s `depth_of` for ring `r` and ring `b`, every vertex of which lies at a
-/// position of r: decided at b's rightmost vertex, then at each one after it, by b's first
-/// edge there off r and off every other ring ([`locally_inside`]); then again from the
-/// rightmost by b's first edge off r alone. Where no vertex decides, b lies on r's
-/// boundary with its corners inside r's: r contains it (the pipeline then requires their
-/// depths to differ by one, as the stage's roles do) — unless cleaning dropped a vertex of
-/// b, which `nest` would look at: `None`.
-fn on_ring<const N: usize, M: Mask>(s: &Scratch<N, M>, r: usize, b: usize) -> Option<bool> {
-    let first = usize::from(s.rightmost[b]);
-    for clear in [true, false] {
-        let mut v = first;
-        loop {
-            if let Some(inside) = locally_inside(s, r, b, v, clear) {
-                return Some(inside);
-            }
-            v = s.next(v);
-            if v == first {
-                break;
+    let mut answer = None;
+    for v in s.ring(b) {
+        let decided = if on_r(v) {
+            locally_inside(s, r, v)
+        } else {
+            [Some(inside(s, r, s.p[v])), None]
+        };
+        for within in decided.into_iter().flatten() {
+            if *answer.get_or_insert(within) != within {
+                return None;
             }
         }
+    }
+    if answer.is_some() {
+        return answer;
     }
     let input = usize::from(s.first[s.rings]);
     let loaded = usize::from(s.first[b + 1] - s.first[b]);
     (s.ring(b).filter(|&v| v < input).count() == loaded).then_some(true)
 }
 
-/// `nest`'s `locally_inside` for ring `r` at b's vertex `v`, on r's position: by b's first
-/// edge at v (to its successor, then from its predecessor) not along r — and, if `clear`,
-/// along no other ring — whether the sector just counter-clockwise of it lies inside r.
-/// With both of b's edges along r: outside if r leaves any part of b's corner there.
-/// `None` where v does not decide.
+/// What b's vertex `v`, at a position of ring `r`, can tell of whether r contains b, as
+/// `nest`'s `locally_inside` reads it there: for each of b's edges at v (to its
+/// successor, from its predecessor) not along r, whether the sector just
+/// counter-clockwise of it lies inside r (`nest` asks the first such edge that runs along
+/// no other ring, or failing that, anywhere, the first); with both along r, "outside"
+/// where r leaves some part of b's corner, else nothing.
 fn locally_inside<const N: usize, M: Mask>(
     s: &Scratch<N, M>,
     r: usize,
-    b: usize,
     v: usize,
-    clear: bool,
-) -> Option<bool> {
+) -> [Option<bool>; 2] {
     let o = s.p[v];
     let (vn, vp) = (s.p[s.next(v)], s.p[s.prev(v)]);
-    // the far ends of ring q's edges through o
-    let ends = |q: usize| {
-        (s.ring(q))
+    // the far ends of r's edges through o
+    let ends = || {
+        (s.ring(r))
             .filter(move |&w| s.p[w] == o)
             .flat_map(move |w| [s.p[s.next(w)], s.p[s.prev(w)]])
     };
-    let along = |q: usize, d: Point| ends(q).any(|e| on_ray(o, e, d));
     // r's winding number just above the ray from o towards +x: its edges through o
     // cross no such ray (nor count in `winding`: o lies on their lines)
     let base = winding(s, r, o);
-    let mut blocked = false;
-    for d in [vn, vp] {
-        if along(r, d) {
-            continue;
-        }
-        if !(clear && (0..s.rings).any(|q| q != b && q != r && along(q, d))) {
-            return Some(winding_after(s, r, o, d, base) > 0);
-        }
-        blocked = true;
-    }
-    if blocked {
-        return None;
+    let off = [vn, vp].map(|d| {
+        let along = ends().any(|e| on_ray(o, e, d));
+        (!along).then(|| winding_after(s, r, o, d, base) > 0)
+    });
+    if off.iter().any(Option::is_some) {
+        return off;
     }
     // both along r: every sector of b's corner, from its first edge and from each of r's
     // edges inside the corner, must lie inside r
     let inside_corner = |e: Point| e != o && corner_contains(o, vn, vp, e) == Some(true);
-    let mut sectors = core::iter::once(vn).chain(ends(r).filter(|&e| inside_corner(e)));
-    sectors
-        .any(|d| winding_after(s, r, o, d, base) <= 0)
-        .then_some(false)
+    let mut sectors = core::iter::once(vn).chain(ends().filter(|&e| inside_corner(e)));
+    let outside = sectors.any(|d| winding_after(s, r, o, d, base) <= 0);
+    [outside.then_some(false), None]
 }
 
 /// The winding number of ring `r` in the sector just counter-clockwise of the direction

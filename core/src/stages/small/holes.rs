@@ -13,13 +13,21 @@ use crate::Nesting;
 /// Step 5: decides the rings' roles by containment — exactly one ring contains every
 /// other, and no other contains another — and turns the holes clockwise. `false`
 /// otherwise, or when `FirstIsOuter` names another ring the boundary (the pipeline then
-/// reports or repairs it). Each ring is tested against each other one by [`contains`].
+/// reports or repairs it). A ring with a vertex no other ring touches is tested against
+/// the others by crossing parity there; one whose every vertex another ring touches, by
+/// [`contains`].
 pub(super) fn nest<const N: usize, M: Mask>(s: &mut Scratch<N, M>, nesting: Nesting) -> bool {
     let mut outer = None;
     for b in 0..s.rings {
+        // (a vertex no other ring touches lies on no other ring: parity there decides)
+        let untouched = s.ring(b).find(|&v| s.touched & bit(v) == M::NONE);
         let mut depth = 0;
         for r in (0..s.rings).filter(|&r| r != b) {
-            match contains(s, r, b) {
+            let within = match untouched {
+                Some(v) => Some(inside(s, r, s.p[v])),
+                None => contains(s, r, b),
+            };
+            match within {
                 Some(within) => depth += usize::from(within),
                 None => return false,
             }
@@ -55,26 +63,34 @@ pub(super) fn nest<const N: usize, M: Mask>(s: &mut Scratch<N, M>, nesting: Nest
 /// that can: at a vertex off r by parity, at one on r by b's edges there
 /// ([`locally_inside`]); where none can, b lies on r's boundary with its corners inside
 /// r's, and r contains it (unless cleaning dropped a vertex of b, which `nest` would look
-/// at). Every vertex that can decide is asked here, and they must agree, or the input
+/// at). Here every vertex on r is asked, and one off r, and they must agree, or the input
 /// goes back: where b's boundary is partly inside r (holes overlapping at a corner of
 /// their outer ring, say, which the check of shared positions does not see), `nest`'s
-/// answer is the first vertex's, and the pipeline refuses what follows from it.
+/// answer is its first vertex's, and the pipeline refuses what follows from it. That
+/// suffices: between two vertices on r, b's boundary stays on one side of r, the side
+/// its edges at those vertices give.
 fn contains<const N: usize, M: Mask>(s: &Scratch<N, M>, r: usize, b: usize) -> Option<bool> {
     let on_r = |v: usize| s.touched & bit(v) != M::NONE && s.ring(r).any(|w| s.p[w] == s.p[v]);
-    if !s.ring(b).any(on_r) {
-        return Some(inside(s, r, s.p[usize::from(s.start[b])]));
-    }
-    let mut answer = None;
+    let (mut answer, mut off, mut touching) = (None, None, false);
     for v in s.ring(b) {
-        let decided = if on_r(v) {
-            locally_inside(s, r, v)
-        } else {
-            [Some(inside(s, r, s.p[v])), None]
-        };
-        for within in decided.into_iter().flatten() {
+        if !on_r(v) {
+            off = off.or(Some(v));
+            continue;
+        }
+        touching = true;
+        for within in locally_inside(s, r, v).into_iter().flatten() {
             if *answer.get_or_insert(within) != within {
                 return None;
             }
+        }
+    }
+    if let Some(v) = off {
+        let within = inside(s, r, s.p[v]);
+        if !touching {
+            return Some(within);
+        }
+        if *answer.get_or_insert(within) != within {
+            return None;
         }
     }
     if answer.is_some() {

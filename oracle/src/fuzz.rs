@@ -28,8 +28,9 @@ use crate::{check, check_fill, check_with, CheckOptions, Input, Nesting};
 pub type Target = fn(&[u8]) -> Result<(), Finding>;
 
 /// The fuzz targets, by name, as `fuzz/Cargo.toml` lists them.
-pub const TARGETS: [(&str, Target); 6] = [
+pub const TARGETS: [(&str, Target); 7] = [
     ("raw_rings", raw_rings),
+    ("small_vs_pipeline", small_vs_pipeline),
     ("nested_valid", nested_valid),
     ("precision", precision),
     ("quality_vs_cdt", quality_vs_cdt),
@@ -190,7 +191,7 @@ fn finding(target: &'static str, what: String, origin: Option<&Case>, input: &In
 /// regression case (`polytri promote --fuzz-target`). `None` for an unknown target.
 pub fn decode_case(target: &str, data: &[u8]) -> Option<Case> {
     let (input, origin) = match target {
-        "raw_rings" => (decode_raw(data).0, None),
+        "raw_rings" | "small_vs_pipeline" => (decode_raw(data).0, None),
         "check_never_panics" => (decode_raw(check_split(data).0).0, None),
         "nested_valid" => {
             let case = generated(&mut Unstructured::new(data), NESTED_MAX);
@@ -329,6 +330,111 @@ pub fn raw_rings(data: &[u8]) -> Result<(), Finding> {
         }
     }
     Ok(())
+}
+
+// ---------------------------------------------------------------------------------------
+// small_vs_pipeline
+
+/// What one call gives, owned, to compare two triangulators' calls.
+#[derive(Debug, PartialEq)]
+struct Outcome {
+    triangles: Vec<[u32; 3]>,
+    polygons: usize,
+    holes: usize,
+    deviation: u64,
+    dropped: Vec<polytri::Dropped>,
+    repairs: Vec<polytri::Repair>,
+}
+
+/// One call of `tri`, owned (the deviation by its bits: the two must agree exactly).
+fn outcome<T: polytri::Coord>(
+    tri: &mut Triangulator<T>,
+    vertices: &[[T; 2]],
+    starts: &[usize],
+    options: &Options,
+) -> Result<Outcome, polytri::Error> {
+    let mut triangles = Vec::new();
+    let report = tri.triangulate(vertices, starts, options, &mut triangles)?;
+    Ok(Outcome {
+        triangles,
+        polygons: report.polygons,
+        holes: report.holes,
+        deviation: report.deviation.to_bits(),
+        dropped: report.dropped.to_vec(),
+        repairs: report.repairs.to_vec(),
+    })
+}
+
+/// The first call on which a triangulator taking the small stage and one never taking it
+/// disagree: both strategies, strict and lenient, both nesting conventions, and the check.
+fn stage_disagrees<T: polytri::Coord + fmt::Debug>(
+    vertices: &[[T; 2]],
+    starts: &[usize],
+) -> Option<String> {
+    let mut with = Triangulator::<T>::new();
+    let mut without = Triangulator::<T>::new();
+    without.set_small_rings(false);
+    for nesting in [TriNesting::Auto, TriNesting::FirstIsOuter] {
+        for strategy in [Strategy::Fast, Strategy::Quality] {
+            for lenient in [false, true] {
+                let options = Options::default()
+                    .with_strategy(strategy)
+                    .with_nesting(nesting)
+                    .with_lenient(lenient);
+                let (a, b) = (
+                    outcome(&mut with, vertices, starts, &options),
+                    outcome(&mut without, vertices, starts, &options),
+                );
+                if a != b {
+                    let mode = if lenient { "lenient" } else { "strict" };
+                    return Some(format!(
+                        "{strategy:?} {mode} {nesting:?}: with the small stage {a:?}, \
+                         through the pipeline {b:?}"
+                    ));
+                }
+            }
+        }
+        let (a, b) = (
+            with.check(vertices, starts, nesting),
+            without.check(vertices, starts, nesting),
+        );
+        if a != b {
+            return Some(format!(
+                "check {nesting:?}: with the small stage {a:?}, through the pipeline {b:?}"
+            ));
+        }
+    }
+    None
+}
+
+/// Target `small_vs_pipeline`: any bytes as rings (as `raw_rings` decodes them), through a
+/// triangulator that may take the small stage and one that never does.
+///
+/// Must hold: the two give the same triangles in the same order, the same report (dropped
+/// vertices, repairs, deviation to the bit) and the same errors, in both strategies,
+/// strict and lenient, both nesting conventions, and the same check — the stage's promise
+/// (`core/src/stages/small`), which the stage's own tests hold on generated families.
+/// Inputs with finite coordinates outside the range where products are exact (see
+/// [`MAX_COORDINATE`], [`MIN_COORDINATE`]) are skipped, as `raw_rings` leaves them unjudged.
+pub fn small_vs_pipeline(data: &[u8]) -> Result<(), Finding> {
+    const NAME: &str = "small_vs_pipeline";
+    let (input, f32) = decode_raw(data);
+    // (finite coordinates too large or too small for exact products: the predicates are
+    // not exact there, and the two paths, asking different questions, may disagree)
+    let inexact =
+        |c: f64| c.is_finite() && c != 0.0 && !(MIN_COORDINATE..=MAX_COORDINATE).contains(&c.abs());
+    if input.vertices.iter().flatten().any(|&c| inexact(c)) {
+        return Ok(());
+    }
+    let disagreement = if f32 {
+        stage_disagrees(&input.vertices_f32(), &input.ring_starts)
+    } else {
+        stage_disagrees(&input.vertices, &input.ring_starts)
+    };
+    match disagreement {
+        Some(what) => Err(finding(NAME, what, None, &input)),
+        None => Ok(()),
+    }
 }
 
 // ---------------------------------------------------------------------------------------

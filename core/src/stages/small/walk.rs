@@ -7,6 +7,7 @@
 
 use super::{bit, members, Mask, Scratch};
 use crate::geom::{approx_angle_rank, bounds, interferes, near, orient2d, Orientation, Point};
+use crate::structures::{scale, slot};
 
 /// Clips the checked (and bridged) polygon into `out` (cleared first) with the strategy's
 /// walk. `false` when the walk gets stuck or needs tidying, the bridges left a wall to
@@ -28,6 +29,7 @@ pub(crate) fn clip_ring<const N: usize, M: Mask>(
         not_ear: M::NONE,
         len: 0,
         no_fan: false,
+        bands: None,
         out,
     };
     // the polygons in ring order, as the clipper takes them
@@ -48,6 +50,9 @@ pub(crate) fn clip_ring<const N: usize, M: Mask>(
         let Some(start) = w.classify(first) else {
             return false;
         };
+        if w.bands.is_none() && w.len > 2 * BANDED as usize && w.reflex.count() > BANDED {
+            w.bands = Some(Bands::new(s));
+        }
         let last = if quality {
             w.quality(start)
         } else {
@@ -77,8 +82,71 @@ struct Walk<'a, const N: usize, M> {
     len: usize,
     /// The fan failed once: don't try again.
     no_fan: bool,
+    /// The nodes sorted into bands, where a polygon has more than [`BANDED`] reflex nodes
+    /// (with fewer, sorting costs more than it saves).
+    bands: Option<Bands<N, M>>,
     out: &'a mut Vec<[u32; 3]>,
 }
+
+/// Each node's column and row among [`BANDS`] of each across the nodes' bounding box, and
+/// by column (row) k the nodes in the columns (rows) before k: an ear test looks only at
+/// the reflex nodes in the columns and rows its triangle spans (the bands are monotone in
+/// the coordinates, so every node in the triangle's box is among them).
+struct Bands<const N: usize, M> {
+    band: [[u8; 2]; N],
+    before: [[M; BANDS + 1]; 2],
+}
+
+impl<const N: usize, M: Mask> Bands<N, M> {
+    /// Sorts the stage's nodes into columns and rows.
+    fn new(s: &Scratch<N, M>) -> Self {
+        let nodes = &s.p[..s.nodes];
+        let (mut lo, mut hi) = (nodes[0], nodes[0]);
+        for p in nodes {
+            (lo.x, lo.y) = (lo.x.min(p.x), lo.y.min(p.y));
+            (hi.x, hi.y) = (hi.x.max(p.x), hi.y.max(p.y));
+        }
+        let (sx, sy) = (scale(BANDS, hi.x - lo.x), scale(BANDS, hi.y - lo.y));
+        let mut bands = Bands {
+            band: [[0; 2]; N],
+            before: [[M::NONE; BANDS + 1]; 2],
+        };
+        // (first each band's own nodes, one place on: then summed)
+        for (v, p) in nodes.iter().enumerate() {
+            let (x, y) = (
+                slot((p.x - lo.x) * sx, BANDS - 1),
+                slot((p.y - lo.y) * sy, BANDS - 1),
+            );
+            bands.band[v] = [x as u8, y as u8];
+            bands.before[0][x + 1] |= bit(v);
+            bands.before[1][y + 1] |= bit(v);
+        }
+        for before in &mut bands.before {
+            for k in 1..=BANDS {
+                let below = before[k - 1];
+                before[k] |= below;
+            }
+        }
+        bands
+    }
+
+    /// The nodes in the columns and rows the triangle a, b, c spans.
+    fn around(&self, a: usize, b: usize, c: usize) -> M {
+        let mut mask = !M::NONE;
+        for (axis, before) in self.before.iter().enumerate() {
+            let [ba, bb, bc] = [a, b, c].map(|v| usize::from(self.band[v][axis]));
+            let (first, last) = (ba.min(bb).min(bc), ba.max(bb).max(bc));
+            mask &= before[last + 1] & !before[first];
+        }
+        mask
+    }
+}
+
+/// Columns (and rows) the ear test's candidates are sorted into.
+const BANDS: usize = 16;
+
+/// The reflex nodes a polygon has before its nodes are sorted into bands ([`Bands`]).
+const BANDED: u32 = 16;
 
 impl<const N: usize, M: Mask> Walk<'_, N, M> {
     fn next(&self, v: usize) -> usize {
@@ -237,7 +305,10 @@ impl<const N: usize, M: Mask> Walk<'_, N, M> {
         let (a, c) = (self.prev(b), self.next(b));
         let (pa, pb, pc) = (self.p(a), self.p(b), self.p(c));
         let (lo, hi) = bounds(pa, pb, pc);
-        let candidates = self.reflex & !bit::<M>(a) & !bit::<M>(c);
+        let mut candidates = self.reflex & !bit::<M>(a) & !bit::<M>(c);
+        if let Some(bands) = &self.bands {
+            candidates &= bands.around(a, b, c);
+        }
         !members(candidates).any(|r| {
             let q = self.p(r);
             let around = || [self.p(self.prev(r)), self.p(self.next(r))];

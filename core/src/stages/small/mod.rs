@@ -53,6 +53,7 @@ use crate::geom::{
     Orientation, Point,
 };
 use crate::report::{DropReason, Dropped};
+use crate::structures::{scale, slot};
 use crate::Nesting;
 
 mod holes;
@@ -534,8 +535,7 @@ fn star_shaped<const N: usize, M: Mask>(s: &Scratch<N, M>) -> bool {
 /// ring at their shared vertex (which, with no straight turn left, is all neighbours have
 /// in common). Then no two vertices share a position either. Every pair of edges whose
 /// boxes overlap is decided by exact signs: up to [`PAIRS_MAX`] edges, found by comparing
-/// every pair of boxes; more, by sorting the boxes by their left sides and comparing each
-/// with those that start before it ends.
+/// every pair of boxes; more, through bands of the bounding box ([`apart_banded`]).
 fn apart<const N: usize, M: Mask>(s: &mut Scratch<N, M>) -> bool {
     // the rings' edges one after the other, each with its neighbours on its ring
     let mut around = [[0u8; 2]; N];
@@ -555,47 +555,16 @@ fn apart<const N: usize, M: Mask>(s: &mut Scratch<N, M>) -> bool {
         }
     }
     let edges = k;
-    let meet = |s: &Scratch<N, M>, k: usize, m: usize| {
-        let (e, f) = (usize::from(s.from[k]), usize::from(s.from[m]));
-        let (a, b) = (s.p[e], s.p[s.next(e)]);
-        let (c, d) = (s.p[f], s.p[s.next(f)]);
-        // (edges with an end in common meet: no signs needed to know)
-        a == c || a == d || b == c || b == d || boxed_segments_meet(a, b, c, d)
-    };
-    if edges <= PAIRS_MAX {
-        for (k, around) in around.iter().enumerate().take(edges) {
-            let [x0, x1, y0, y1] = s.boxes[k];
-            let [before, after] = around.map(usize::from);
-            for m in k + 1..edges {
-                let [u0, u1, w0, w1] = s.boxes[m];
-                let overlap = u0 <= x1 && x0 <= u1 && w0 <= y1 && y0 <= w1;
-                if overlap && m != after && m != before && meet(s, k, m) && !touch::record(s, k, m)
-                {
-                    return false;
-                }
-            }
-        }
-        return true;
+    if edges > PAIRS_MAX {
+        return apart_banded(s, &around, edges);
     }
-    let mut order = [0u8; N];
-    for (k, o) in order.iter_mut().enumerate().take(edges) {
-        *o = k as u8;
-    }
-    let order = &mut order[..edges];
-    let boxes = &s.boxes;
-    order.sort_unstable_by(|&a, &b| boxes[usize::from(a)][0].total_cmp(&boxes[usize::from(b)][0]));
-    for (i, &k) in order.iter().enumerate() {
-        let k = usize::from(k);
-        let [_, x1, y0, y1] = s.boxes[k];
-        let [before, after] = around[k].map(usize::from);
-        for &m in &order[i + 1..] {
-            let m = usize::from(m);
-            let [u0, _, w0, w1] = s.boxes[m];
-            if u0 > x1 {
-                break;
-            }
-            let overlap = w0 <= y1 && y0 <= w1;
-            if overlap && m != after && m != before && meet(s, k, m) && !touch::record(s, k, m) {
+    for (k, around) in around.iter().enumerate().take(edges) {
+        let [x0, x1, y0, y1] = s.boxes[k];
+        let [before, after] = around.map(usize::from);
+        for m in k + 1..edges {
+            let [u0, u1, w0, w1] = s.boxes[m];
+            let overlap = u0 <= x1 && x0 <= u1 && w0 <= y1 && y0 <= w1;
+            if overlap && m != after && m != before && !apart_pair(s, k, m) {
                 return false;
             }
         }
@@ -603,9 +572,92 @@ fn apart<const N: usize, M: Mask>(s: &mut Scratch<N, M>) -> bool {
     true
 }
 
-/// Up to this many edges, [`apart`] compares every pair of boxes; more, it sorts them
-/// first (measured: even at 33–64 edges, faster beyond).
-const PAIRS_MAX: usize = 48;
+/// Up to this many edges, [`apart`] compares every pair of boxes; more, it goes through
+/// bands (measured: from 25 edges on, the bands cost less).
+const PAIRS_MAX: usize = 24;
+
+/// The columns (and rows) of [`apart_banded`].
+const PROOF_BANDS: usize = 16;
+
+/// [`apart`] for more edges: the rings' bounding box is cut into [`PROOF_BANDS`] columns
+/// and as many rows, each edge's box spans a run of each, and an edge is compared only
+/// with the later edges whose runs overlap its own in both, read off as node masks (the
+/// edges starting in a column up to its last, and ending in one from its first on). The
+/// bands are monotone in the coordinates, so two boxes that overlap have runs that do:
+/// the pairs compared are those of the pair scan whose bands meet, which every pair of
+/// overlapping boxes is. (A scan of every pair of boxes mispredicts its branches about
+/// once per pair; here the masks leave a few candidates per edge.)
+fn apart_banded<const N: usize, M: Mask>(
+    s: &mut Scratch<N, M>,
+    around: &[[u8; 2]; N],
+    edges: usize,
+) -> bool {
+    let (mut lo, mut hi) = (s.boxes[0], s.boxes[0]);
+    for b in &s.boxes[..edges] {
+        (lo[0], lo[2]) = (lo[0].min(b[0]), lo[2].min(b[2]));
+        (hi[1], hi[3]) = (hi[1].max(b[1]), hi[3].max(b[3]));
+    }
+    let (sx, sy) = (
+        scale(PROOF_BANDS, hi[1] - lo[0]),
+        scale(PROOF_BANDS, hi[3] - lo[2]),
+    );
+    let last = PROOF_BANDS - 1;
+    // per axis: by band k, the edges starting in a band up to k, and those ending in a
+    // band from k on (first each band's own, then summed)
+    let mut starts = [[M::NONE; PROOF_BANDS]; 2];
+    let mut ends = [[M::NONE; PROOF_BANDS]; 2];
+    let mut runs = [[0u8; 4]; N];
+    for (k, b) in s.boxes[..edges].iter().enumerate() {
+        let run = [
+            slot((b[0] - lo[0]) * sx, last),
+            slot((b[1] - lo[0]) * sx, last),
+            slot((b[2] - lo[2]) * sy, last),
+            slot((b[3] - lo[2]) * sy, last),
+        ];
+        runs[k] = run.map(|c| c as u8);
+        starts[0][run[0]] |= bit(k);
+        ends[0][run[1]] |= bit(k);
+        starts[1][run[2]] |= bit(k);
+        ends[1][run[3]] |= bit(k);
+    }
+    for axis in 0..2 {
+        for k in 1..PROOF_BANDS {
+            let below = starts[axis][k - 1];
+            starts[axis][k] |= below;
+            let above = ends[axis][last - k + 1];
+            ends[axis][last - k] |= above;
+        }
+    }
+    let mut later = !M::NONE;
+    for k in 0..edges {
+        later &= !bit::<M>(k);
+        let [c0, c1, r0, r1] = runs[k].map(usize::from);
+        let [before, after] = around[k].map(usize::from);
+        let candidates = (later & starts[0][c1] & ends[0][c0] & starts[1][r1] & ends[1][r0])
+            & !(bit::<M>(before) | bit::<M>(after));
+        let [x0, x1, y0, y1] = s.boxes[k];
+        for m in members(candidates) {
+            let [u0, u1, w0, w1] = s.boxes[m];
+            let overlap = u0 <= x1 && x0 <= u1 && w0 <= y1 && y0 <= w1;
+            if overlap && !apart_pair(s, k, m) {
+                return false;
+            }
+        }
+    }
+    true
+}
+
+/// Edges `k` and `m` of [`apart`], no neighbours, whose boxes overlap: true when they do
+/// not meet, or meet at a vertex the stage lists ([`touch::record`]); false when they
+/// cross or the stage cannot list the contact.
+fn apart_pair<const N: usize, M: Mask>(s: &mut Scratch<N, M>, k: usize, m: usize) -> bool {
+    let (e, f) = (usize::from(s.from[k]), usize::from(s.from[m]));
+    let (a, b) = (s.p[e], s.p[s.next(e)]);
+    let (c, d) = (s.p[f], s.p[s.next(f)]);
+    // (edges with an end in common meet: no signs needed to know)
+    let meet = a == c || a == d || b == c || b == d || boxed_segments_meet(a, b, c, d);
+    !meet || touch::record(s, k, m)
+}
 
 /// Where rings touch, `clean`'s canonical vertices: all nodes at a position take the
 /// lowest vertex index there, and the others are reported (`Coincident`), by position,

@@ -2,9 +2,10 @@
 //! adjacent edges at their shared vertex. Then the sweep of `super::sweep` would find no
 //! crossing and no T-junction, and no two nodes share a position, so `clean` skips it.
 //!
-//! A few edges are sorted by the left sides of their bounding boxes, each compared with the
-//! boxes that start before it ends (sweep and prune); more go into a uniform grid, and
-//! edges sharing a cell are compared. Box comparisons only narrow the candidates down;
+//! A few hundred edges are sorted into columns and rows of their bounding box, and each
+//! is compared with the edges whose columns and rows overlap its own; more go into a
+//! uniform grid (or their x-monotone chains are paired through one), and edges sharing a
+//! cell are compared. Box comparisons only narrow the candidates down;
 //! every pair whose boxes overlap is decided by exact `orient2d` signs. Both scans have a
 //! budget linear in the edges: when many long edges lie over each other they give up, say
 //! "not proved", and the full sweep runs as before. Either way the result is the sweep's.
@@ -19,7 +20,7 @@
 
 use super::sweep::Touch;
 use crate::geom::{boxed_segments_meet, cmp_xy, orient2d, within_box, Orientation};
-use crate::structures::{scale, shape};
+use crate::structures::{scale, shape, slot};
 use crate::structures::{NodeId, Pool};
 
 /// Box comparisons allowed per edge (plus a constant) before the proof gives up.
@@ -101,10 +102,10 @@ struct Chain {
 /// two, and takes the grid).
 const EDGES_PER_CHAIN: usize = 4;
 
-/// Up to this many edges, comparing every pair of boxes is cheaper than sorting them.
+/// Up to this many edges, comparing every pair of boxes is cheaper than banding them.
 const TINY: usize = 32;
 
-/// Up to this many edges, sorting the boxes is cheaper than a grid or chains.
+/// Up to this many edges, bands ([`scan_banded`]) are cheaper than a grid or chains.
 const SMALL: usize = 512;
 
 /// What [`edges_meet_at_vertices`] proved.
@@ -414,11 +415,7 @@ fn scan(
     if n <= TINY && n * n.saturating_sub(1) / 2 <= budget {
         scan_pairs(&scratch.boxes, visit)
     } else if n <= SMALL {
-        sweep_along_shorter_extents(&mut scratch.boxes);
-        // (in place; merging the rings' monotone runs instead, which are short in glyphs,
-        // took 10-15% longer over the whole check of a CJK page)
-        scratch.boxes.sort_unstable_by(|a, b| a.x0.total_cmp(&b.x0));
-        scan_sorted(&scratch.boxes, budget, visit)
+        scan_banded(&scratch.boxes, budget, visit)
     } else if collect_chains(pool, &scratch.boxes, &mut scratch.chains) {
         scan_chains(scratch, budget, visit)
     } else {
@@ -571,48 +568,6 @@ fn scan_chains(
     })
 }
 
-/// Swaps x and y in every box where that makes the sorted scan compare fewer pairs. The
-/// scan compares each box with those starting before it ends along the sorting axis:
-/// about the boxes' extents along that axis over the spread of their positions, summed.
-/// The spread is the standard deviation of the boxes' centres, not the range, which one
-/// long edge can stretch (a coastline's frame around islands crowded into a strip); the
-/// axis with the smaller sum of extents over spread wins (on the glyph pages and earcut's
-/// fixtures, 20–43% fewer pairs than always sorting by x). A heuristic in floating point:
-/// the visitors read positions from the pool, so only the scan sees the swap.
-fn sweep_along_shorter_extents(boxes: &mut [EdgeBox]) -> bool {
-    let Some(first) = boxes.first() else {
-        return false;
-    };
-    // centres relative to the first box's (doubled), so that large coordinates with a
-    // small spread keep their digits
-    let (ox, oy) = (first.x0 + first.x1, first.y0 + first.y1);
-    let (mut widths, mut heights) = (0.0, 0.0);
-    let (mut sx, mut sxx, mut sy, mut syy) = (0.0, 0.0, 0.0, 0.0);
-    for b in boxes.iter() {
-        widths += b.x1 - b.x0;
-        heights += b.y1 - b.y0;
-        let (cx, cy) = (b.x0 + b.x1 - ox, b.y0 + b.y1 - oy);
-        (sx, sxx, sy, syy) = (sx + cx, sxx + cx * cx, sy + cy, syy + cy * cy);
-    }
-    let n = boxes.len() as f64;
-    // n² times the variances of the (doubled) centres
-    let (vx, vy) = (n * sxx - sx * sx, n * syy - sy * sy);
-    // heights / √vy < widths / √vx, squared
-    let swap = heights * heights * vx < widths * widths * vy;
-    if swap {
-        for b in boxes.iter_mut() {
-            *b = EdgeBox {
-                x0: b.y0,
-                x1: b.y1,
-                y0: b.x0,
-                y1: b.x1,
-                ..*b
-            };
-        }
-    }
-    swap
-}
-
 /// A handful of edges: compare every pair's boxes, which costs less than sorting them.
 fn scan_pairs(boxes: &[EdgeBox], mut visit: impl FnMut(&EdgeBox, &EdgeBox) -> bool) -> Scan {
     for (i, e) in boxes.iter().enumerate() {
@@ -625,24 +580,85 @@ fn scan_pairs(boxes: &[EdgeBox], mut visit: impl FnMut(&EdgeBox, &EdgeBox) -> bo
     Scan::Done
 }
 
-/// A few edges, sorted by the left sides of their boxes: compare each with the boxes that
-/// start before it ends.
-fn scan_sorted(
+/// Columns (and rows) of [`scan_banded`].
+const BANDS: usize = 16;
+
+/// Words of [`scan_banded`]'s edge sets: one bit per edge, up to [`SMALL`].
+const WORDS: usize = SMALL / 64;
+
+/// A few hundred edges: the boxes' bounding box is cut into [`BANDS`] columns and as many
+/// rows, each edge's box spans a run of each, and each edge is compared with the later
+/// edges whose runs overlap its own in both, read off bit sets (the edges starting in a
+/// column up to its last, and ending in one from its first on). The bands are monotone in
+/// the coordinates, so every pair of overlapping boxes is among those compared. (Sorting
+/// the boxes and comparing each with those starting before it ends cost about twice as
+/// much on earcut's fixtures of this size: the sort, and a branch per pair that the
+/// processor cannot predict.)
+fn scan_banded(
     boxes: &[EdgeBox],
     mut budget: usize,
     mut visit: impl FnMut(&EdgeBox, &EdgeBox) -> bool,
 ) -> Scan {
-    for (i, e) in boxes.iter().enumerate() {
-        for f in &boxes[i + 1..] {
-            if f.x0 > e.x1 {
-                break;
+    let Some(first) = boxes.first() else {
+        return Scan::Done;
+    };
+    let words = boxes.len().div_ceil(64).min(WORDS);
+    let (mut x0, mut x1, mut y0, mut y1) = (first.x0, first.x1, first.y0, first.y1);
+    for b in boxes {
+        (x0, y0) = (x0.min(b.x0), y0.min(b.y0));
+        (x1, y1) = (x1.max(b.x1), y1.max(b.y1));
+    }
+    let (sx, sy) = (scale(BANDS, x1 - x0), scale(BANDS, y1 - y0));
+    let last = BANDS - 1;
+    // per axis, by band k: the edges starting in a band up to k, and those ending in one
+    // from k on (first each band's own, then summed)
+    let mut starts = [[[0u64; WORDS]; BANDS]; 2];
+    let mut ends = [[[0u64; WORDS]; BANDS]; 2];
+    let mut runs = [[0u8; 4]; SMALL];
+    for (i, b) in boxes.iter().take(SMALL).enumerate() {
+        let run = [
+            slot((b.x0 - x0) * sx, last),
+            slot((b.x1 - x0) * sx, last),
+            slot((b.y0 - y0) * sy, last),
+            slot((b.y1 - y0) * sy, last),
+        ];
+        runs[i] = run.map(|c| c as u8);
+        let (w, bit) = (i / 64, 1u64 << (i % 64));
+        starts[0][run[0]][w] |= bit;
+        ends[0][run[1]][w] |= bit;
+        starts[1][run[2]][w] |= bit;
+        ends[1][run[3]][w] |= bit;
+    }
+    for axis in 0..2 {
+        for k in 1..BANDS {
+            for w in 0..words {
+                let below = starts[axis][k - 1][w];
+                starts[axis][k][w] |= below;
+                let above = ends[axis][last - k + 1][w];
+                ends[axis][last - k][w] |= above;
             }
-            if budget == 0 {
-                return Scan::OutOfBudget;
+        }
+    }
+    for (i, e) in boxes.iter().take(SMALL).enumerate() {
+        let [c0, c1, r0, r1] = runs[i].map(usize::from);
+        for w in i / 64..words {
+            let mut bits = starts[0][c1][w] & ends[0][c0][w] & starts[1][r1][w] & ends[1][r0][w];
+            if w == i / 64 {
+                // the later edges only
+                bits &= !1u64 << (i % 64);
             }
-            budget -= 1;
-            if f.y0 <= e.y1 && e.y0 <= f.y1 && visit(e, f) {
-                return Scan::Stopped;
+            while bits != 0 {
+                let j = w * 64 + bits.trailing_zeros() as usize;
+                bits &= bits - 1;
+                if budget == 0 {
+                    return Scan::OutOfBudget;
+                }
+                budget -= 1;
+                let f = &boxes[j];
+                let overlap = f.x0 <= e.x1 && e.x0 <= f.x1 && f.y0 <= e.y1 && e.y0 <= f.y1;
+                if overlap && visit(e, f) {
+                    return Scan::Stopped;
+                }
             }
         }
     }
@@ -930,7 +946,7 @@ mod tests {
             SQUARE,
             &[(0., 5.), (3., 7.), (3., 3.)]
         ]));
-        // seeded pseudo-random rings, few and many edges (the sorted scan and the grid)
+        // seeded pseudo-random rings, few and many edges (the banded scan and the grid)
         let mut random = xorshift(0x2545_f491_4f6c_dd1d);
         let mut next = || (random() >> 40) as f64 / f64::from(1u32 << 24) * 100.0;
         // two 400-gons crossing each other: the grid finishes
@@ -995,55 +1011,11 @@ mod tests {
     }
 
     #[test]
-    fn the_sorted_scan_runs_along_the_shorter_extents() {
-        // Islands in a column overlap each other along x, not along y: their boxes swap
-        // axes; in a row they keep them. A square frame round them changes nothing (its
-        // range is the same both ways; the spread of the islands decides).
-        let island = |x: f64, y: f64| {
-            let top = [(x + 4.0, y + 9.0), (x + 2.0, y + 12.0), (x, y + 9.0)];
-            [vec![(x, y), (x + 4.0, y)], top.to_vec()].concat()
-        };
-        let column: Vec<_> = (0..8).map(|i| island(0.0, f64::from(i) * 20.0)).collect();
-        let row: Vec<_> = (0..8).map(|i| island(f64::from(i) * 20.0, 0.0)).collect();
-        let framed = |mut rings: Vec<Vec<(f64, f64)>>| {
-            rings.push(vec![
-                (-200.0, -200.0),
-                (200.0, -200.0),
-                (200.0, 200.0),
-                (-200.0, 200.0),
-            ]);
-            rings
-        };
-        for (rings, swapped) in [
-            (column.clone(), true),
-            (row.clone(), false),
-            (framed(column), true),
-            (framed(row), false),
-        ] {
-            let refs: Vec<&[(f64, f64)]> = rings.iter().map(Vec::as_slice).collect();
-            let (pool, starts) = build(&refs);
-            let mut boxes = Vec::new();
-            collect_boxes(&pool, &starts, &mut boxes, None);
-            let before = boxes.clone();
-            assert_eq!(sweep_along_shorter_extents(&mut boxes), swapped);
-            for (b, a) in boxes.iter().zip(&before) {
-                let expected = if swapped {
-                    (a.y0, a.y1, a.x0, a.x1)
-                } else {
-                    (a.x0, a.x1, a.y0, a.y1)
-                };
-                assert_eq!((b.x0, b.x1, b.y0, b.y1), expected);
-                assert_eq!((b.from, b.to), (a.from, a.to));
-            }
-        }
-    }
-
-    #[test]
     fn every_scan_visits_every_overlapping_pair() {
         let mut random = xorshift(0x9e37_79b9_7f4a_7c15);
         let mut next = move || (random() >> 11) as f64 / (1u64 << 53) as f64;
         // wobbly circles (few long chains: the chain scan), with wobbly holes, and random
-        // zigzags (a chain per edge: the sorted scan and the grid); grid-aligned
+        // zigzags (a chain per edge: the banded scan and the grid); grid-aligned
         // coordinates give vertical edges and boxes touching at their sides
         let mut chain_scans = 0;
         for round in 0..60 {
@@ -1065,8 +1037,8 @@ mod tests {
                         v
                     }
                 };
-                // every other round mirrored across the diagonal, so that the sorted scan
-                // runs along x for some shape and along y for its mirror image
+                // every other round mirrored across the diagonal: each shape along x and
+                // along y
                 let mirror = |(x, y): (f64, f64)| if round % 2 == 0 { (x, y) } else { (y, x) };
                 let ring: Vec<(f64, f64)> = (0..n)
                     .map(|k| {

@@ -1,6 +1,8 @@
 //! Runs polytri on one rings or shapes JSON file many times, for a profiler:
 //! `cargo run --release -p polytri --example profile -- FILE [RUNS] [fast|lenient|quality|check|even-odd|threads:N] [first|auto]`
 //! (`threads:N` needs `--features threads`).
+//! With `NO_SMALL` set in the environment every input takes the whole pipeline, never
+//! the small stage.
 //! Shapes go one polygon at a time (first ring outer, unless `auto` asks for nesting by
 //! containment), as `polytri bench` gives them.
 
@@ -54,6 +56,7 @@ fn main() {
         other => panic!("unknown mode {other}"),
     };
     let mut tri = Triangulator::<f64>::new();
+    tri.set_small_rings(std::env::var_os("NO_SMALL").is_none());
     let mut out = Vec::new();
     let mut triangles = 0;
     let many: Vec<(&[[f64; 2]], &[usize])> = flat.iter().map(|(v, s)| (&v[..], &s[..])).collect();

@@ -19,7 +19,8 @@
 //! The same scans find the crossing edges of lenient input ([`mark_crossed`]).
 
 use super::sweep::Touch;
-use crate::geom::{boxed_segments_meet, cmp_xy, orient2d, within_box, Orientation};
+use crate::geom::Orientation;
+use crate::geom::{boxed_segments_meet, cmp_xy, greatest, least, orient2d, within_box};
 use crate::structures::{scale, shape, slot};
 use crate::structures::{NodeId, Pool};
 
@@ -453,8 +454,8 @@ fn collect_chains(pool: &Pool, boxes: &[EdgeBox], chains: &mut Vec<Chain>) -> bo
                     along = dir;
                     c.falling = dir < 0;
                 }
-                (c.x0, c.x1) = (c.x0.min(e.x0), c.x1.max(e.x1));
-                (c.y0, c.y1) = (c.y0.min(e.y0), c.y1.max(e.y1));
+                (c.x0, c.x1) = (least(c.x0, e.x0), greatest(c.x1, e.x1));
+                (c.y0, c.y1) = (least(c.y0, e.y0), greatest(c.y1, e.y1));
             }
             None => {
                 if chains.len() >= limit {
@@ -605,8 +606,8 @@ fn scan_banded(
     let words = boxes.len().div_ceil(64).min(WORDS);
     let (mut x0, mut x1, mut y0, mut y1) = (first.x0, first.x1, first.y0, first.y1);
     for b in boxes {
-        (x0, y0) = (x0.min(b.x0), y0.min(b.y0));
-        (x1, y1) = (x1.max(b.x1), y1.max(b.y1));
+        (x0, y0) = (least(x0, b.x0), least(y0, b.y0));
+        (x1, y1) = (greatest(x1, b.x1), greatest(y1, b.y1));
     }
     let (sx, sy) = (scale(BANDS, x1 - x0), scale(BANDS, y1 - y0));
     let last = BANDS - 1;
@@ -724,7 +725,8 @@ fn overlapping_pairs<B: Bounds>(
     let (mut x0, mut y0, mut x1, mut y1) = (f64::MAX, f64::MAX, f64::MIN, f64::MIN);
     for b in items {
         let (l, r, d, u) = b.bounds();
-        (x0, y0, x1, y1) = (x0.min(l), y0.min(d), x1.max(r), y1.max(u));
+        (x0, y0) = (least(x0, l), least(y0, d));
+        (x1, y1) = (greatest(x1, r), greatest(y1, u));
     }
     let (w, h) = (x1 - x0, y1 - y0);
     let (nx, ny) = shape((items.len() / 2).max(1), w, h);

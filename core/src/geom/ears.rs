@@ -1,7 +1,7 @@
 //! The geometry of the ear test, shared by the clip stage and the small stage: the
 //! box an ear's candidates must lie in, and whether a vertex spoils an ear.
 
-use super::predicates::{left_of, orient2d, Orientation, Point};
+use super::predicates::{greatest, least, left_of, orient2d, Orientation, Point};
 
 /// The fuzzing experiment, never enabled otherwise: built with
 /// `RUSTFLAGS="--cfg polytri_planted_bug"`, the ear test misses reflex vertices on the
@@ -15,8 +15,7 @@ const PLANTED_BUG: bool = cfg!(polytri_planted_bug);
 /// handling).
 #[inline(always)]
 pub(crate) fn bounds(a: Point, b: Point, c: Point) -> (Point, Point) {
-    let min = |s: f64, t: f64| if t < s { t } else { s };
-    let max = |s: f64, t: f64| if t > s { t } else { s };
+    let (min, max) = (least, greatest);
     let lo = Point::new(min(min(a.x, b.x), c.x), min(min(a.y, b.y), c.y));
     let hi = Point::new(max(max(a.x, b.x), c.x), max(max(a.y, b.y), c.y));
     (lo, hi)

@@ -112,7 +112,31 @@ pub(crate) fn on_segment(a: Point, b: Point, p: Point) -> bool {
 /// True when p lies in the axis-aligned box spanned by a and b (comparisons only, exact).
 #[inline]
 pub(crate) fn within_box(a: Point, b: Point, p: Point) -> bool {
-    p.x >= a.x.min(b.x) && p.x <= a.x.max(b.x) && p.y >= a.y.min(b.y) && p.y <= a.y.max(b.y)
+    p.x >= least(a.x, b.x)
+        && p.x <= greatest(a.x, b.x)
+        && p.y >= least(a.y, b.y)
+        && p.y <= greatest(a.y, b.y)
+}
+
+/// The lesser of two numbers, neither NaN: a plain comparison, without `f64::min`'s NaN
+/// handling (coordinates are finite once loaded).
+#[inline(always)]
+pub(crate) fn least(a: f64, b: f64) -> f64 {
+    if b < a {
+        b
+    } else {
+        a
+    }
+}
+
+/// The greater of two numbers, neither NaN (see [`least`]).
+#[inline(always)]
+pub(crate) fn greatest(a: f64, b: f64) -> f64 {
+    if b > a {
+        b
+    } else {
+        a
+    }
 }
 
 /// Compares the directions `o → p` and `o → q` by angle, counter-clockwise from the

@@ -3,7 +3,7 @@
 
 use core::cmp::Ordering;
 
-use super::predicates::{orient2d, within_box, Orientation, Point};
+use super::predicates::{greatest, least, orient2d, within_box, Orientation, Point};
 
 /// Whether segments a–b and c–d cross at a point interior to both.
 #[inline]
@@ -21,10 +21,10 @@ pub(crate) fn crosses(a: Point, b: Point, c: Point, d: Point) -> bool {
 /// exact): then the segments have no point in common, and no predicate is needed.
 #[inline]
 fn boxes_apart(a: Point, b: Point, c: Point, d: Point) -> bool {
-    a.x.max(b.x) < c.x.min(d.x)
-        || c.x.max(d.x) < a.x.min(b.x)
-        || a.y.max(b.y) < c.y.min(d.y)
-        || c.y.max(d.y) < a.y.min(b.y)
+    greatest(a.x, b.x) < least(c.x, d.x)
+        || greatest(c.x, d.x) < least(a.x, b.x)
+        || greatest(a.y, b.y) < least(c.y, d.y)
+        || greatest(c.y, d.y) < least(a.y, b.y)
 }
 
 /// Whether closed segments a–b and c–d have a point in common.

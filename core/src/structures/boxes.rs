@@ -13,7 +13,7 @@
 //! Edges pushed after that (a bridge) stay in a short tail that every query reads. Boxes
 //! only narrow down candidates: every decision is still the caller's exact test.
 
-use crate::geom::Point;
+use crate::geom::{greatest, least, Point};
 use crate::structures::NodeId;
 
 /// Boxes per node.
@@ -76,7 +76,8 @@ impl BoxTree {
 
     /// Adds the edge `n` from `a` to `b` (to the tail, until the next [`BoxTree::seal`]).
     pub fn push(&mut self, n: NodeId, a: Point, b: Point) {
-        let bbox = [a.x.min(b.x), a.y.min(b.y), a.x.max(b.x), a.y.max(b.y)];
+        let (x0, y0) = (least(a.x, b.x), least(a.y, b.y));
+        let bbox = [x0, y0, greatest(a.x, b.x), greatest(a.y, b.y)];
         self.items.push((n, bbox));
     }
 

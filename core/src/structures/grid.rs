@@ -10,7 +10,7 @@
 //!   triangle, only in the cells along it.
 
 use super::boxes::{BoxIter, BoxTree};
-use crate::geom::Point;
+use crate::geom::{greatest, least, Point};
 use crate::structures::NodeId;
 
 /// An edge whose bounding box covers at most this many cells is listed in each of them.
@@ -591,7 +591,8 @@ impl Cells {
         }
         let (mut x0, mut y0, mut x1, mut y1) = (f64::MAX, f64::MAX, f64::MIN, f64::MIN);
         for &(_, p) in nodes {
-            (x0, y0, x1, y1) = (x0.min(p.x), y0.min(p.y), x1.max(p.x), y1.max(p.y));
+            (x0, y0) = (least(x0, p.x), least(y0, p.y));
+            (x1, y1) = (greatest(x1, p.x), greatest(y1, p.y));
         }
         let count = nodes.len().max(1);
         let (w, h) = (x1 - x0, y1 - y0);

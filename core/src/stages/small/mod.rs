@@ -459,7 +459,7 @@ fn crossed_as_loaded<const N: usize, M: Mask>(s: &Scratch<N, M>) -> bool {
         for i in f..e {
             let end = if i + 1 == e { f } else { i + 1 };
             let (a, b) = (s.p[i], s.p[end]);
-            let bounds = [a.x.min(b.x), a.x.max(b.x), a.y.min(b.y), a.y.max(b.y)];
+            let bounds = edge_box(a, b);
             edges[k] = (bounds, i as u8, end as u8);
             k += 1;
         }
@@ -481,6 +481,15 @@ fn crossed_as_loaded<const N: usize, M: Mask>(s: &Scratch<N, M>) -> bool {
                 }
             })
         })
+}
+
+/// The box of the edge from `a` to `b`, finite points: left, right, bottom, top (plain
+/// comparisons, without `f64::min`'s NaN handling).
+#[inline(always)]
+fn edge_box(a: Point, b: Point) -> [f64; 4] {
+    let (x0, x1) = if b.x < a.x { (b.x, a.x) } else { (a.x, b.x) };
+    let (y0, y1) = if b.y < a.y { (b.y, a.y) } else { (a.y, b.y) };
+    [x0, x1, y0, y1]
 }
 
 /// Whether a turn is to the left; `None` when straight.
@@ -545,7 +554,7 @@ fn apart<const N: usize, M: Mask>(s: &mut Scratch<N, M>) -> bool {
         let mut v = usize::from(s.start[r]);
         for i in 0..len {
             let (a, b) = (s.p[v], s.p[s.next(v)]);
-            s.boxes[k] = [a.x.min(b.x), a.x.max(b.x), a.y.min(b.y), a.y.max(b.y)];
+            s.boxes[k] = edge_box(a, b);
             s.from[k] = v as u8;
             let before = if i == 0 { len - 1 } else { i - 1 };
             let after = if i + 1 == len { 0 } else { i + 1 };
@@ -594,8 +603,11 @@ fn apart_banded<const N: usize, M: Mask>(
 ) -> bool {
     let (mut lo, mut hi) = (s.boxes[0], s.boxes[0]);
     for b in &s.boxes[..edges] {
-        (lo[0], lo[2]) = (lo[0].min(b[0]), lo[2].min(b[2]));
-        (hi[1], hi[3]) = (hi[1].max(b[1]), hi[3].max(b[3]));
+        // (finite: plain comparisons, without `f64::min`'s NaN handling)
+        lo[0] = if b[0] < lo[0] { b[0] } else { lo[0] };
+        lo[2] = if b[2] < lo[2] { b[2] } else { lo[2] };
+        hi[1] = if b[1] > hi[1] { b[1] } else { hi[1] };
+        hi[3] = if b[3] > hi[3] { b[3] } else { hi[3] };
     }
     let (sx, sy) = (
         scale(PROOF_BANDS, hi[1] - lo[0]),

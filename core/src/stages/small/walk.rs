@@ -103,8 +103,11 @@ impl<const N: usize, M: Mask> Bands<N, M> {
         let nodes = &s.p[..s.nodes];
         let (mut lo, mut hi) = (nodes[0], nodes[0]);
         for p in nodes {
-            (lo.x, lo.y) = (lo.x.min(p.x), lo.y.min(p.y));
-            (hi.x, hi.y) = (hi.x.max(p.x), hi.y.max(p.y));
+            // (finite: plain comparisons, without `f64::min`'s NaN handling)
+            lo.x = if p.x < lo.x { p.x } else { lo.x };
+            lo.y = if p.y < lo.y { p.y } else { lo.y };
+            hi.x = if p.x > hi.x { p.x } else { hi.x };
+            hi.y = if p.y > hi.y { p.y } else { hi.y };
         }
         let (sx, sy) = (scale(BANDS, hi.x - lo.x), scale(BANDS, hi.y - lo.y));
         let mut bands = Bands {

@@ -582,7 +582,7 @@ fn scan_pairs(boxes: &[EdgeBox], mut visit: impl FnMut(&EdgeBox, &EdgeBox) -> bo
 }
 
 /// Columns (and rows) of [`scan_banded`].
-const BANDS: usize = 16;
+const BANDS: usize = 32;
 
 /// Words of [`scan_banded`]'s edge sets: one bit per edge, up to [`SMALL`].
 const WORDS: usize = SMALL / 64;

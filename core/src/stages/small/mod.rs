@@ -49,8 +49,8 @@
 
 use crate::context::Context;
 use crate::geom::{
-    approx_cross, boxed_segments_meet, crosses, orient2d, ray_crossing, within_box, Coord,
-    Orientation, Point,
+    approx_cross, boxed_segments_meet, crosses, greatest, least, orient2d, ray_crossing,
+    within_box, Coord, Orientation, Point,
 };
 use crate::report::{DropReason, Dropped};
 use crate::structures::{scale, slot};
@@ -483,8 +483,8 @@ fn crossed_as_loaded<const N: usize, M: Mask>(s: &Scratch<N, M>) -> bool {
         })
 }
 
-/// The box of the edge from `a` to `b`, finite points: left, right, bottom, top (plain
-/// comparisons, without `f64::min`'s NaN handling).
+/// The box of the edge from `a` to `b`, finite points: left, right, bottom, top (one
+/// plain comparison per axis, without `f64::min`'s NaN handling).
 #[inline(always)]
 fn edge_box(a: Point, b: Point) -> [f64; 4] {
     let (x0, x1) = if b.x < a.x { (b.x, a.x) } else { (a.x, b.x) };
@@ -588,65 +588,20 @@ const PAIRS_MAX: usize = 24;
 /// The columns (and rows) of [`apart_banded`].
 const PROOF_BANDS: usize = 16;
 
-/// [`apart`] for more edges: the rings' bounding box is cut into [`PROOF_BANDS`] columns
-/// and as many rows, each edge's box spans a run of each, and an edge is compared only
-/// with the later edges whose runs overlap its own in both, read off as node masks (the
-/// edges starting in a column up to its last, and ending in one from its first on). The
-/// bands are monotone in the coordinates, so two boxes that overlap have runs that do:
-/// the pairs compared are those of the pair scan whose bands meet, which every pair of
-/// overlapping boxes is. (A scan of every pair of boxes mispredicts its branches about
-/// once per pair; here the masks leave a few candidates per edge.)
+/// [`apart`] for more edges: only the pairs [`EdgeBands`] offers, which every pair of
+/// overlapping boxes is among. (A scan of every pair of boxes mispredicts about one
+/// branch per pair; here the masks leave a few candidates per edge.)
 fn apart_banded<const N: usize, M: Mask>(
     s: &mut Scratch<N, M>,
     around: &[[u8; 2]; N],
     edges: usize,
 ) -> bool {
-    let (mut lo, mut hi) = (s.boxes[0], s.boxes[0]);
-    for b in &s.boxes[..edges] {
-        // (finite: plain comparisons, without `f64::min`'s NaN handling)
-        lo[0] = if b[0] < lo[0] { b[0] } else { lo[0] };
-        lo[2] = if b[2] < lo[2] { b[2] } else { lo[2] };
-        hi[1] = if b[1] > hi[1] { b[1] } else { hi[1] };
-        hi[3] = if b[3] > hi[3] { b[3] } else { hi[3] };
-    }
-    let (sx, sy) = (
-        scale(PROOF_BANDS, hi[1] - lo[0]),
-        scale(PROOF_BANDS, hi[3] - lo[2]),
-    );
-    let last = PROOF_BANDS - 1;
-    // per axis: by band k, the edges starting in a band up to k, and those ending in a
-    // band from k on (first each band's own, then summed)
-    let mut starts = [[M::NONE; PROOF_BANDS]; 2];
-    let mut ends = [[M::NONE; PROOF_BANDS]; 2];
-    let mut runs = [[0u8; 4]; N];
-    for (k, b) in s.boxes[..edges].iter().enumerate() {
-        let run = [
-            slot((b[0] - lo[0]) * sx, last),
-            slot((b[1] - lo[0]) * sx, last),
-            slot((b[2] - lo[2]) * sy, last),
-            slot((b[3] - lo[2]) * sy, last),
-        ];
-        runs[k] = run.map(|c| c as u8);
-        starts[0][run[0]] |= bit(k);
-        ends[0][run[1]] |= bit(k);
-        starts[1][run[2]] |= bit(k);
-        ends[1][run[3]] |= bit(k);
-    }
-    for axis in 0..2 {
-        for k in 1..PROOF_BANDS {
-            let below = starts[axis][k - 1];
-            starts[axis][k] |= below;
-            let above = ends[axis][last - k + 1];
-            ends[axis][last - k] |= above;
-        }
-    }
+    let bands = EdgeBands::<N, M>::new(&s.boxes[..edges]);
     let mut later = !M::NONE;
-    for k in 0..edges {
+    for (k, around) in around.iter().enumerate().take(edges) {
         later &= !bit::<M>(k);
-        let [c0, c1, r0, r1] = runs[k].map(usize::from);
-        let [before, after] = around[k].map(usize::from);
-        let candidates = (later & starts[0][c1] & ends[0][c0] & starts[1][r1] & ends[1][r0])
-            & !(bit::<M>(before) | bit::<M>(after));
+        let [before, after] = around.map(usize::from);
+        let candidates = later & bands.meeting(k) & !(bit::<M>(before) | bit::<M>(after));
         let [x0, x1, y0, y1] = s.boxes[k];
         for m in members(candidates) {
             let [u0, u1, w0, w1] = s.boxes[m];
@@ -657,6 +612,68 @@ fn apart_banded<const N: usize, M: Mask>(
         }
     }
     true
+}
+
+/// Edge boxes (left, right, bottom, top) sorted into bands: the boxes' bounding box cut
+/// into [`PROOF_BANDS`] columns and as many rows, each box spanning a run of each. Two
+/// boxes that overlap have runs that overlap in both (the bands are monotone in the
+/// coordinates), read off node masks: by band, the boxes starting in a band up to it and
+/// those ending in one from it on.
+struct EdgeBands<const N: usize, M> {
+    runs: [[u8; 4]; N],
+    starts: [[M; PROOF_BANDS]; 2],
+    ends: [[M; PROOF_BANDS]; 2],
+}
+
+impl<const N: usize, M: Mask> EdgeBands<N, M> {
+    /// Sorts `boxes` (at most `N`, finite, not empty) into bands.
+    #[inline(always)]
+    fn new(boxes: &[[f64; 4]]) -> Self {
+        let (mut lo, mut hi) = (boxes[0], boxes[0]);
+        for b in boxes {
+            (lo[0], lo[2]) = (least(lo[0], b[0]), least(lo[2], b[2]));
+            (hi[1], hi[3]) = (greatest(hi[1], b[1]), greatest(hi[3], b[3]));
+        }
+        let (sx, sy) = (
+            scale(PROOF_BANDS, hi[1] - lo[0]),
+            scale(PROOF_BANDS, hi[3] - lo[2]),
+        );
+        let last = PROOF_BANDS - 1;
+        let mut bands = EdgeBands {
+            runs: [[0u8; 4]; N],
+            starts: [[M::NONE; PROOF_BANDS]; 2],
+            ends: [[M::NONE; PROOF_BANDS]; 2],
+        };
+        // (first each band's own, then summed)
+        for (k, b) in boxes.iter().enumerate() {
+            let run = [
+                slot((b[0] - lo[0]) * sx, last),
+                slot((b[1] - lo[0]) * sx, last),
+                slot((b[2] - lo[2]) * sy, last),
+                slot((b[3] - lo[2]) * sy, last),
+            ];
+            bands.runs[k] = run.map(|c| c as u8);
+            bands.starts[0][run[0]] |= bit(k);
+            bands.ends[0][run[1]] |= bit(k);
+            bands.starts[1][run[2]] |= bit(k);
+            bands.ends[1][run[3]] |= bit(k);
+        }
+        for axis in 0..2 {
+            for k in 1..PROOF_BANDS {
+                let below = bands.starts[axis][k - 1];
+                bands.starts[axis][k] |= below;
+                let above = bands.ends[axis][last - k + 1];
+                bands.ends[axis][last - k] |= above;
+            }
+        }
+        bands
+    }
+
+    /// The boxes whose runs overlap box `k`'s in both directions (`k` among them).
+    fn meeting(&self, k: usize) -> M {
+        let [c0, c1, r0, r1] = self.runs[k].map(usize::from);
+        self.starts[0][c1] & self.ends[0][c0] & self.starts[1][r1] & self.ends[1][r0]
+    }
 }
 
 /// Edges `k` and `m` of [`apart`], no neighbours, whose boxes overlap: true when they do
@@ -779,4 +796,66 @@ pub(crate) fn clip<const N: usize, M: Mask>(
         return false;
     }
     clip_ring(s, quality, lenient, out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// xorshift64*, seeded.
+    fn xorshift(mut seed: u64) -> impl FnMut() -> u64 {
+        move || {
+            seed ^= seed >> 12;
+            seed ^= seed << 25;
+            seed ^= seed >> 27;
+            seed.wrapping_mul(0x2545_f491_4f6c_dd1d)
+        }
+    }
+
+    #[test]
+    fn edge_bands_offer_every_pair_of_overlapping_boxes() {
+        let mut random = xorshift(0x0bad_5eed);
+        let (mut offered, mut pairs) = (0, 0);
+        for round in 0..400 {
+            let n = 2 + (random() % 127) as usize;
+            // coordinates on a coarse grid now and then (boxes touching at their sides,
+            // flat boxes), else spread over a range that changes with the round
+            let span = [1.0, 1e-6, 1e9, 3.0][round % 4];
+            let mut coordinate = || {
+                let u = (random() >> 11) as f64 / (1u64 << 53) as f64;
+                if round % 3 == 0 {
+                    (u * 8.0).floor() * span
+                } else {
+                    u * span
+                }
+            };
+            let boxes: Vec<[f64; 4]> = (0..n)
+                .map(|_| {
+                    let a = Point::new(coordinate(), coordinate());
+                    let b = Point::new(coordinate(), coordinate());
+                    edge_box(a, b)
+                })
+                .collect();
+            let bands = EdgeBands::<128, u128>::new(&boxes);
+            for (k, e) in boxes.iter().enumerate() {
+                let meeting = bands.meeting(k);
+                assert!(
+                    meeting & bit::<u128>(k) != 0,
+                    "round {round}: box {k} itself"
+                );
+                for (m, f) in boxes.iter().enumerate() {
+                    let overlap = f[0] <= e[1] && e[0] <= f[1] && f[2] <= e[3] && e[2] <= f[3];
+                    let offers = meeting & bit::<u128>(m) != 0;
+                    assert!(
+                        !overlap || offers,
+                        "round {round}: boxes {k} and {m} overlap"
+                    );
+                    offered += usize::from(offers);
+                    pairs += 1;
+                }
+            }
+        }
+        // (and the bands narrow: not every pair is offered)
+        assert!(offered < pairs * 3 / 4, "{offered} of {pairs} offered");
+    }
 }

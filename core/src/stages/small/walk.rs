@@ -430,3 +430,60 @@ impl<const N: usize> Queue<N> {
         (least != u64::MAX).then_some((least & 0xffff_ffff) as usize)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::stages::small::Wide;
+
+    #[test]
+    fn bands_hold_every_node_in_a_triangles_box() {
+        let mut seed = 0x5eed_ba9d_u64;
+        let mut random = move || {
+            seed ^= seed >> 12;
+            seed ^= seed << 25;
+            seed ^= seed >> 27;
+            seed.wrapping_mul(0x2545_f491_4f6c_dd1d)
+        };
+        let (mut around, mut boxed, mut all) = (0, 0, 0);
+        for round in 0..300 {
+            let mut s = Wide {
+                nodes: 3 + (random() % 126) as usize,
+                ..Wide::default()
+            };
+            let span = [1.0, 1e-9, 1e12][round % 3];
+            for v in 0..s.nodes {
+                let mut coordinate = || {
+                    let u = (random() >> 11) as f64 / (1u64 << 53) as f64;
+                    // (a coarse grid now and then: nodes on the bands' edges, repeats)
+                    if round % 4 == 0 {
+                        (u * 16.0).floor() * span
+                    } else {
+                        u * span - span / 2.0
+                    }
+                };
+                s.p[v] = Point::new(coordinate(), coordinate());
+            }
+            let bands = Bands::new(&s);
+            for _ in 0..50 {
+                let [a, b, c] = [0; 3].map(|_| (random() % s.nodes as u64) as usize);
+                let (lo, hi) = bounds(s.p[a], s.p[b], s.p[c]);
+                let mask = bands.around(a, b, c);
+                for v in 0..s.nodes {
+                    let q = s.p[v];
+                    let in_box = q.x >= lo.x && q.x <= hi.x && q.y >= lo.y && q.y <= hi.y;
+                    let held = mask & bit::<u128>(v) != 0;
+                    assert!(!in_box || held, "round {round}: node {v} in the box");
+                    (around, boxed, all) = (
+                        around + usize::from(held),
+                        boxed + usize::from(in_box),
+                        all + 1,
+                    );
+                }
+            }
+        }
+        // the bands narrow the candidates (a triangle of random nodes spans much of the
+        // box, so not by much here)
+        assert!(boxed <= around && around < all, "{boxed} {around} {all}");
+    }
+}

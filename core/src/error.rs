@@ -111,8 +111,11 @@ pub enum Error {
         /// The vertex furthest from the plane.
         vertex: usize,
     },
-    /// With a fill rule, a coordinate is too large (magnitude above 2¹⁰⁰) or too small
-    /// (nonzero, below 2⁻²⁴⁸) for crossing points to be computed exactly.
+    /// A coordinate is too large or too small for exact computation (strict mode): without
+    /// a fill rule, a magnitude of 2⁵⁰⁰ or more or, nonzero, below 2⁻⁴⁸⁰, where orientation
+    /// signs would overflow or lose bits; with a fill rule, above 2¹⁰⁰ or, nonzero, below
+    /// 2⁻²⁴⁸, for crossing points to be computed exactly (every `f32` value is fine
+    /// without a fill rule).
     CoordinateRange {
         /// The offending vertex.
         vertex: usize,
@@ -190,7 +193,7 @@ impl fmt::Display for Error {
             ),
             Error::CoordinateRange { vertex } => write!(
                 f,
-                "vertex {vertex} has a coordinate outside what fill rules compute exactly (0, or a magnitude from 2^-248 to 2^100)"
+                "vertex {vertex} has a coordinate outside the range computed exactly (0, or a magnitude from 2^-480 to below 2^500; with a fill rule, from 2^-248 to 2^100)"
             ),
             Error::Internal { stage } => write!(
                 f,

@@ -120,9 +120,20 @@ fn ring(rng: &mut Rng, n: usize, grid: f64) -> (Vec<[f64; 2]>, bool) {
             let i = rng.below(v.len());
             v[i][rng.below(2)] = [f64::NAN, f64::INFINITY][rng.below(2)];
         }
+        7 => {
+            // a coordinate beyond the exact range of the signs (2^-480 to 2^500), or the
+            // whole ring scaled there (a ring of 1e300 or 1e-300, an f32 of 0 or infinity)
+            let scale = [1e300, 1e-300, 1e-200][rng.below(3)];
+            if rng.below(2) == 0 {
+                let i = rng.below(v.len());
+                v[i][rng.below(2)] *= scale;
+            } else {
+                v.iter_mut().flatten().for_each(|c| *c *= scale);
+            }
+        }
         _ => {}
     }
-    (v, (3..=6).contains(&defect))
+    (v, (3..=7).contains(&defect))
 }
 
 /// Of the four runs of [`compare_rings`] (two strategies, strict and lenient), how many

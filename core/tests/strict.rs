@@ -55,6 +55,51 @@ fn non_finite_coordinates_are_named() {
 }
 
 #[test]
+fn coordinates_beyond_exact_signs_are_named_in_strict_mode() {
+    // Beyond 2^500 products of coordinate differences overflow; below 2^-480 they lose
+    // bits: the signs would not be exact. Strict mode names the vertex, in every strategy
+    // and in `check`; lenient mode still returns triangles. A whole ring scaled there too.
+    let square: Vec<[f64; 2]> = SQUARE.to_vec();
+    for scale in [1e300, 1e-300] {
+        for vertex in [None, Some(2)] {
+            let mut v = square.clone();
+            match vertex {
+                Some(i) => v[i][1] *= scale,
+                None => v.iter_mut().flatten().for_each(|c| *c *= scale),
+            }
+            let expected = Error::CoordinateRange {
+                vertex: vertex.unwrap_or(1),
+            };
+            for strategy in [Strategy::Fast, Strategy::Quality, Strategy::Seidel] {
+                let opts = Options::default().with_strategy(strategy);
+                assert_eq!(tri_f64(&v, &[0], opts), Err(expected), "{scale}");
+            }
+            let mut tri = Triangulator::<f64>::new();
+            assert_eq!(tri.check(&v, &[0], Nesting::Auto), Err(expected));
+            assert!(expected.to_string().contains("2^500"));
+            let lenient = Options::default().with_lenient(true);
+            assert!(tri_f64(&v, &[0], lenient).is_ok(), "{scale} lenient");
+        }
+    }
+    // the same square just inside the range is triangulated, as is every f32 value
+    for scale in [2f64.powi(497), 2f64.powi(-480)] {
+        let v: Vec<[f64; 2]> = square
+            .iter()
+            .map(|p| [p[0] * scale, p[1] * scale])
+            .collect();
+        assert_eq!(tri_f64(&v, &[0], Options::default()), Ok(2), "{scale}");
+    }
+    let v32: Vec<[f32; 2]> = SQUARE
+        .iter()
+        .map(|p| [p[0] as f32 * 1e37, p[1] as f32 * 1e37])
+        .collect();
+    let mut out = Vec::new();
+    let mut tri32 = Triangulator::<f32>::new();
+    let made = tri32.triangulate(&v32, &[0], &Options::default(), &mut out);
+    assert!(made.is_ok() && out.len() == 2);
+}
+
+#[test]
 fn malformed_ring_starts_are_refused() {
     let mut v: Vec<[f64; 2]> = SQUARE.to_vec();
     v.extend([[1.0, 1.0], [1.0, 2.0], [2.0, 1.0]]);

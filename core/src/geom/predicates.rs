@@ -69,6 +69,32 @@ pub(crate) fn orient2d(a: Point, b: Point, c: Point) -> Orientation {
     }
 }
 
+/// Whether [`orient2d`] decides exactly on coordinates like `x`: 0, or a magnitude from
+/// 2⁻⁴⁸⁰ up to (not including) 2⁵⁰⁰. A difference of two such coordinates is below 2⁵⁰¹,
+/// so products of two (and robust's splitting of them) stay below `f64::MAX`; and every
+/// such coordinate is a multiple of 2⁻⁵³², its last mantissa bit, so every product of two
+/// differences, and every rounding error robust's expansions carry, is a multiple of
+/// 2⁻¹⁰⁶⁴, which `f64` holds exactly, subnormal or not. Every `f32` value is in range. Not
+/// NaN, not infinite. (Read off the exponent bits.)
+#[inline(always)]
+pub(crate) fn orient_exact(x: f64) -> bool {
+    // the biased exponents of 2⁻⁴⁸⁰ and 2⁵⁰⁰ (the first excluded); the sign bit shifted
+    // out, zero alone has no bit left
+    const LOW: u64 = 1023 - 480;
+    const HIGH: u64 = 1023 + 500;
+    let bits = x.to_bits() << 1;
+    let exponent = bits >> 53;
+    (exponent.wrapping_sub(LOW) < HIGH - LOW) | (bits == 0)
+}
+
+/// The smallest nonzero coordinate magnitude [`orient_exact`] accepts: 2⁻⁴⁸⁰.
+#[cfg(test)]
+pub(crate) const ORIENT_MIN: f64 = 3.203_332_952_292_961_5e-145;
+
+/// The coordinate magnitude from which [`orient_exact`] refuses: 2⁵⁰⁰.
+#[cfg(test)]
+pub(crate) const ORIENT_MAX: f64 = 3.273_390_607_896_142e150;
+
 /// [`orient2d`] where the inlined filter could not decide (and for non-finite input).
 #[cold]
 #[inline(never)]
@@ -201,6 +227,28 @@ pub(crate) fn approx_cross(a: Point, b: Point) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_exact_range_of_orient2d_is_powers_of_two() {
+        assert_eq!(ORIENT_MIN, 2f64.powi(-480));
+        assert_eq!(ORIENT_MAX, 2f64.powi(500));
+        let below_max = ORIENT_MAX * (1.0 - f64::EPSILON / 2.0);
+        assert!(orient_exact(0.0) && orient_exact(-0.0) && orient_exact(below_max));
+        assert!(orient_exact(-ORIENT_MIN) && orient_exact(f64::from(f32::MAX)));
+        assert!(orient_exact(f64::from(f32::from_bits(1)))); // the least f32
+        assert!(orient_exact(1.0) && orient_exact(-3.5e7) && orient_exact(1e-100));
+        let bad = [f64::NAN, f64::INFINITY, -f64::INFINITY, 1e200, -1e-200];
+        let more = [
+            f64::MIN_POSITIVE,
+            ORIENT_MAX,
+            -ORIENT_MAX,
+            f64::from_bits(1),
+        ];
+        for x in bad.into_iter().chain(more) {
+            assert!(!orient_exact(x), "{x}");
+        }
+        assert!(!orient_exact(ORIENT_MIN * (1.0 - f64::EPSILON / 2.0)));
+    }
 
     fn p(x: f64, y: f64) -> Point {
         Point::new(x, y)

@@ -3,7 +3,7 @@
 
 use crate::context::{Context, Ring};
 use crate::geom::Coord;
-use crate::geom::Point;
+use crate::geom::{orient_exact, Point};
 use crate::report::{DropReason, Dropped, RepairKind};
 use crate::structures::NodeId;
 use crate::Error;
@@ -97,7 +97,7 @@ fn load_ring<T: Coord>(
     let run = vertices.get(start..end).unwrap_or_default();
     let count = if run.iter().all(|v| {
         let p = position(v);
-        p.x.is_finite() && p.y.is_finite()
+        orient_exact(p.x) && orient_exact(p.y)
     }) {
         // the usual case: every vertex is a node, in one go
         let nodes = run.iter().enumerate();
@@ -124,7 +124,9 @@ fn load_ring<T: Coord>(
 }
 
 /// Loads the finite vertices of `run`, the first of which is vertex `start`, as nodes of
-/// a new ring, linked in order: lenient mode drops the others, strict mode refuses them.
+/// a new ring, linked in order: lenient mode drops the others, strict mode refuses them;
+/// and coordinates too large or too small for exact signs ([`orient_exact`]) strict mode
+/// refuses too, while lenient mode keeps them (best effort: its signs may be wrong).
 fn load_finite<T: Coord>(
     cx: &mut Context,
     run: &[[T; 2]],
@@ -146,6 +148,10 @@ fn load_finite<T: Coord>(
                 reason: DropReason::NonFinite,
             });
             continue;
+        }
+        let exact = orient_exact(p.x) && orient_exact(p.y);
+        if !exact && !cx.lenient {
+            return Err(Error::CoordinateRange { vertex: i });
         }
         cx.pool.push(p, i as u32, ring);
     }
@@ -268,6 +274,36 @@ mod tests {
                 .iter()
                 .all(|n| n.p.x.is_finite() && n.p.y.is_finite()));
         }
+    }
+
+    #[test]
+    fn coordinates_beyond_exact_signs_are_refused_or_kept() {
+        let (max, min) = (crate::geom::ORIENT_MAX, crate::geom::ORIENT_MIN);
+        for bad in [1e300, -1e200, max, 1e-300, -min / 2.0, f64::MIN_POSITIVE] {
+            let mut v = SQUARE_AND_HOLE;
+            v[5][1] = bad;
+            let (_, result) = loaded(&v, &[0, 4], false);
+            assert_eq!(result, Err(Error::CoordinateRange { vertex: 5 }), "{bad}");
+            // lenient mode keeps the vertex (best effort)
+            let (cx, result) = loaded(&v, &[0, 4], true);
+            assert_eq!(result, Ok(()));
+            assert_eq!(cx.pool.len(), 7);
+            assert!(cx.dropped.is_empty());
+        }
+        // the ends of the range, and zero, are fine
+        let below_max = max * (1.0 - f64::EPSILON / 2.0);
+        for good in [below_max, -below_max, min, -min, 0.0, -0.0] {
+            let mut v = SQUARE_AND_HOLE;
+            v[5][0] = good;
+            assert_eq!(loaded(&v, &[0, 4], false).1, Ok(()), "{good}");
+        }
+        // a non-finite vertex before an out-of-range one is named first
+        let mut v = SQUARE_AND_HOLE;
+        (v[2][0], v[5][0]) = (f64::NAN, 1e300);
+        assert_eq!(
+            loaded(&v, &[0, 4], false).1,
+            Err(Error::NonFinite { vertex: 2 })
+        );
     }
 
     #[test]

@@ -36,7 +36,8 @@
 //!    polygon back.
 //!
 //! Whatever the pipeline would treat specially makes the stage give up (`false`) before
-//! writing anything the pipeline would not: non-finite coordinates, a spike in lenient
+//! writing anything the pipeline would not: non-finite coordinates or ones outside the
+//! exact range of the signs (`geom::orient_exact`), a spike in lenient
 //! mode or one hiding a crossing, a ring left with fewer than three vertices (but for the
 //! only ring in strict mode, dropped whole as `clean` drops it), two edges crossing, more
 //! than eight nodes at one position, a ring touching itself at its rightmost vertex,
@@ -49,8 +50,8 @@
 
 use crate::context::Context;
 use crate::geom::{
-    approx_cross, boxed_segments_meet, crosses, greatest, least, orient2d, ray_crossing,
-    within_box, Coord, Orientation, Point,
+    approx_cross, boxed_segments_meet, crosses, greatest, least, orient2d, orient_exact,
+    ray_crossing, within_box, Coord, Orientation, Point,
 };
 use crate::report::{DropReason, Dropped};
 use crate::structures::{scale, slot};
@@ -318,7 +319,9 @@ pub(crate) fn check<T: Coord, const N: usize, M: Mask>(
     // 1. load, as `load` does (−0.0 read as +0.0)
     for (i, v) in vertices.iter().enumerate() {
         let p = Point::new(v[0].to_f64() + 0.0, v[1].to_f64() + 0.0);
-        if !(p.x.is_finite() && p.y.is_finite()) {
+        // (non-finite, or too large or small for exact signs: the pipeline refuses, or
+        // in lenient mode drops or keeps them)
+        if !(orient_exact(p.x) && orient_exact(p.y)) {
             return false;
         }
         s.p[i] = p;
@@ -517,7 +520,9 @@ fn star_shaped<const N: usize, M: Mask>(s: &Scratch<N, M>) -> bool {
         (sx, sy) = (sx + s.p[v].x, sy + s.p[v].y);
     }
     let c = Point::new(sx / len as f64, sy / len as f64);
-    if !(c.x.is_finite() && c.y.is_finite()) {
+    // (a mean of tiny coordinates may need bits below those of the coordinates: its signs
+    // would not be exact)
+    if !(orient_exact(c.x) && orient_exact(c.y)) {
         return false;
     }
     let v = usize::from(s.start[0]);

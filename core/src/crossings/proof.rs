@@ -569,7 +569,7 @@ fn scan_chains(
     })
 }
 
-/// A handful of edges: compare every pair's boxes, which costs less than sorting them.
+/// A handful of edges: compare every pair's boxes, which costs less than banding them.
 fn scan_pairs(boxes: &[EdgeBox], mut visit: impl FnMut(&EdgeBox, &EdgeBox) -> bool) -> Scan {
     for (i, e) in boxes.iter().enumerate() {
         for f in &boxes[i + 1..] {

@@ -6,7 +6,8 @@
 //! and generated polygons of `core/tests/small.rs` never get there).
 
 use super::{bit, members, Mask, Scratch};
-use crate::geom::{approx_angle_rank, bounds, interferes, near, orient2d, Orientation, Point};
+use crate::geom::{approx_angle_rank, bounds, greatest, interferes, least, near, orient2d};
+use crate::geom::{Orientation, Point};
 use crate::structures::{scale, slot};
 
 /// Clips the checked (and bridged) polygon into `out` (cleared first) with the strategy's
@@ -82,8 +83,9 @@ struct Walk<'a, const N: usize, M> {
     len: usize,
     /// The fan failed once: don't try again.
     no_fan: bool,
-    /// The nodes sorted into bands, where a polygon has more than [`BANDED`] reflex nodes
-    /// (with fewer, sorting costs more than it saves).
+    /// The nodes sorted into bands, once a polygon of more than twice [`BANDED`] nodes
+    /// has more than [`BANDED`] reflex nodes (with fewer, sorting costs more than it
+    /// saves).
     bands: Option<Bands<N, M>>,
     out: &'a mut Vec<[u32; 3]>,
 }
@@ -103,11 +105,8 @@ impl<const N: usize, M: Mask> Bands<N, M> {
         let nodes = &s.p[..s.nodes];
         let (mut lo, mut hi) = (nodes[0], nodes[0]);
         for p in nodes {
-            // (finite: plain comparisons, without `f64::min`'s NaN handling)
-            lo.x = if p.x < lo.x { p.x } else { lo.x };
-            lo.y = if p.y < lo.y { p.y } else { lo.y };
-            hi.x = if p.x > hi.x { p.x } else { hi.x };
-            hi.y = if p.y > hi.y { p.y } else { hi.y };
+            (lo.x, lo.y) = (least(lo.x, p.x), least(lo.y, p.y));
+            (hi.x, hi.y) = (greatest(hi.x, p.x), greatest(hi.y, p.y));
         }
         let (sx, sy) = (scale(BANDS, hi.x - lo.x), scale(BANDS, hi.y - lo.y));
         let mut bands = Bands {

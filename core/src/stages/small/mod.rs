@@ -806,28 +806,19 @@ pub(crate) fn clip<const N: usize, M: Mask>(
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// xorshift64*, seeded.
-    fn xorshift(mut seed: u64) -> impl FnMut() -> u64 {
-        move || {
-            seed ^= seed >> 12;
-            seed ^= seed << 25;
-            seed ^= seed >> 27;
-            seed.wrapping_mul(0x2545_f491_4f6c_dd1d)
-        }
-    }
+    use crate::testing::{random, unit_random};
 
     #[test]
     fn edge_bands_offer_every_pair_of_overlapping_boxes() {
-        let mut random = xorshift(0x0bad_5eed);
+        let (mut below, mut unit) = (random(0x0bad_5eed), unit_random(0x5eed_0bad));
         let (mut offered, mut pairs) = (0, 0);
         for round in 0..400 {
-            let n = 2 + (random() % 127) as usize;
+            let n = 2 + below(127) as usize;
             // coordinates on a coarse grid now and then (boxes touching at their sides,
             // flat boxes), else spread over a range that changes with the round
             let span = [1.0, 1e-6, 1e9, 3.0][round % 4];
             let mut coordinate = || {
-                let u = (random() >> 11) as f64 / (1u64 << 53) as f64;
+                let u = unit();
                 if round % 3 == 0 {
                     (u * 8.0).floor() * span
                 } else {

@@ -434,26 +434,21 @@ impl<const N: usize> Queue<N> {
 mod tests {
     use super::*;
     use crate::stages::small::Wide;
+    use crate::testing::{random, unit_random};
 
     #[test]
     fn bands_hold_every_node_in_a_triangles_box() {
-        let mut seed = 0x5eed_ba9d_u64;
-        let mut random = move || {
-            seed ^= seed >> 12;
-            seed ^= seed << 25;
-            seed ^= seed >> 27;
-            seed.wrapping_mul(0x2545_f491_4f6c_dd1d)
-        };
+        let (mut below, mut unit) = (random(0x5eed_ba9d), unit_random(0xba9d_5eed));
         let (mut around, mut boxed, mut all) = (0, 0, 0);
         for round in 0..300 {
             let mut s = Wide {
-                nodes: 3 + (random() % 126) as usize,
+                nodes: 3 + below(126) as usize,
                 ..Wide::default()
             };
             let span = [1.0, 1e-9, 1e12][round % 3];
             for v in 0..s.nodes {
                 let mut coordinate = || {
-                    let u = (random() >> 11) as f64 / (1u64 << 53) as f64;
+                    let u = unit();
                     // (a coarse grid now and then: nodes on the bands' edges, repeats)
                     if round % 4 == 0 {
                         (u * 16.0).floor() * span
@@ -465,7 +460,7 @@ mod tests {
             }
             let bands = Bands::new(&s);
             for _ in 0..50 {
-                let [a, b, c] = [0; 3].map(|_| (random() % s.nodes as u64) as usize);
+                let [a, b, c] = [0; 3].map(|_| below(s.nodes as u64) as usize);
                 let (lo, hi) = bounds(s.p[a], s.p[b], s.p[c]);
                 let mask = bands.around(a, b, c);
                 for v in 0..s.nodes {

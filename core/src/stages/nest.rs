@@ -16,7 +16,9 @@
 //! side. The ray then stops at that edge, a cell or two away. And a few small rings that
 //! meet nowhere (a glyph), or only at points (a hole touching its polygon's corner), skip
 //! the grid: each one's depth is counted directly, from the others' winding numbers
-//! around one of its vertices that lies on no other ring.
+//! around one of its vertices that lies on no other ring. More such rings, none touching
+//! itself, are counted in one pass along them all (`swept_depths`): with those vertices
+//! sorted by height, each edge meets the ones whose height it spans.
 //!
 //! `Nesting::FirstIsOuter` (earcut's convention) takes ring 0 as the outer boundary and the
 //! rest as its holes; strict mode checks that this is true.
@@ -55,6 +57,15 @@ pub(crate) struct Scratch {
     dropped_edges: Vec<RingEdge>,
     /// The rings still to decide at the position being looked at.
     order: Vec<u32>,
+    /// [`swept_depths`]: each ring's test point (y, x, ring) by y, and each ring's sum.
+    probes: Vec<(f64, f64, u32)>,
+    sums: Vec<i64>,
+    /// Tests: never count depths by [`swept_depths`] (to exercise the grid), and whether
+    /// it counted them last.
+    #[cfg(test)]
+    no_sweep: bool,
+    #[cfg(test)]
+    swept: bool,
     /// The rays of `check_shared_positions`.
     touch_nets: Vec<(Point, i32)>,
     /// [`decide_hub`]: the corners at the hub (start direction, end direction, ring), the
@@ -201,7 +212,7 @@ fn first_is_outer(cx: &mut Context, s: &mut Scratch) -> Result<(), Error> {
 /// Rings go by descending rightmost x: the ring whose depth [`depth_from_nearest`] builds
 /// on reaches further right than the ring asking, so it is done by then.
 fn compute_depths(cx: &mut Context, s: &mut Scratch) -> Result<(), Error> {
-    if direct_depths(cx) {
+    if direct_depths(cx) || swept_depths(cx, s) {
         return Ok(());
     }
     cx.edge_index
@@ -376,7 +387,7 @@ fn direct_depths(cx: &mut Context) -> bool {
         (alive, edges) = (alive + 1, edges + ring.len as usize);
     }
     // (the size first: it is cheaper to learn than where the rings meet)
-    if alive * edges > DIRECT_WORK || !meet_at_points(cx) {
+    if alive * edges > DIRECT_WORK || !meet_at_points(cx, false) {
         return false;
     }
     for b in 0..cx.rings.len() {
@@ -412,12 +423,110 @@ fn direct_depths(cx: &mut Context) -> bool {
     true
 }
 
+/// [`direct_depths`] for more rings and edges, in strict mode where no ring touches
+/// itself: then every ring is a simple closed curve turning counter-clockwise (as `clean`
+/// left it), whose winding number round a point on no ring is 1 inside and 0 outside. So
+/// the depth of ring b, the number of rings round its test node (chosen as
+/// [`direct_depths`] does), is the sum of the winding numbers of all the other rings there:
+/// the signed crossings of the ray from it with their edges. One pass along every ring
+/// counts them for every test node at once: with the test nodes sorted by height, a cursor
+/// follows the ring's height, and the nodes it passes over along an edge are those whose
+/// rays may cross the edge. False, deciding nothing, where that does not apply, or when
+/// the edges pass over more test nodes than a few per edge and a hundred per ring (tall
+/// edges over many rings: the grid's rays cost less).
+fn swept_depths(cx: &mut Context, s: &mut Scratch) -> bool {
+    #[cfg(test)]
+    {
+        s.swept = false;
+        if s.no_sweep {
+            return false;
+        }
+    }
+    // (a ring touching itself may wind twice round a point, or round none of its lobes
+    // the way its rightmost vertex says)
+    if cx.lenient || !cx.crossings.is_empty() || !meet_at_points(cx, true) {
+        return false;
+    }
+    let pool = &cx.pool;
+    s.probes.clear();
+    let mut edges = 0;
+    for (b, ring) in cx.rings.iter().enumerate().filter(|(_, r)| r.alive) {
+        edges += ring.len as usize;
+        let off = |n: NodeId| nodes_at(cx, pool.p(n)) == 0;
+        let first = ring.rightmost;
+        let v = if cx.shared.is_empty() || off(first) {
+            first
+        } else {
+            match pool.ring(first).find(|&n| off(n)) {
+                Some(n) => n,
+                None => return false,
+            }
+        };
+        let p = pool.p(v);
+        s.probes.push((p.y, p.x, b as u32));
+    }
+    s.probes
+        .sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.2.cmp(&b.2)));
+    s.sums.clear();
+    s.sums.resize(cx.rings.len(), 0);
+    let probes = &s.probes;
+    // (a grid ray costs a few thousand instructions, a test node passed over a dozen)
+    let mut budget = 4 * edges + 128 * probes.len() + 64;
+    for (q, ring) in cx.rings.iter().enumerate().filter(|(_, r)| r.alive) {
+        // the cursor: the test nodes below the current vertex's height
+        let mut at = probes.partition_point(|t| t.0 < pool.p(ring.start).y);
+        for n in pool.ring(ring.start) {
+            let (a, b) = (pool.p(n), pool.p(pool.next(n)));
+            // upwards, the nodes at heights a.y <= y < b.y, whose rays the edge crosses
+            // where they lie left of it; downwards, those at b.y <= y < a.y, where they lie
+            // right of the edge's direction (`ray_crossing`'s half-open rule)
+            let (from, up) = (at, a.y < b.y);
+            if up {
+                while at < probes.len() && probes[at].0 < b.y {
+                    at += 1;
+                }
+            } else {
+                while at > 0 && probes[at - 1].0 >= b.y {
+                    at -= 1;
+                }
+            }
+            let (first, end) = if up { (from, at) } else { (at, from) };
+            if end - first > budget {
+                return false;
+            }
+            budget -= end - first;
+            let right = if a.x < b.x { b.x } else { a.x };
+            for &(y, x, r) in &probes[first..end] {
+                if x > right || r as usize == q {
+                    continue;
+                }
+                let turn = orient2d(a, b, Point::new(x, y));
+                if up && turn == Orientation::CounterClockwise {
+                    s.sums[r as usize] += 1;
+                } else if !up && turn == Orientation::Clockwise {
+                    s.sums[r as usize] -= 1;
+                }
+            }
+        }
+    }
+    for (b, ring) in cx.rings.iter_mut().enumerate() {
+        if ring.alive {
+            ring.depth = s.sums[b].unsigned_abs() as u32;
+        }
+    }
+    #[cfg(test)]
+    {
+        s.swept = true;
+    }
+    true
+}
+
 /// Whether the rings meet, if at all, only at isolated points: no two rings (nor two
 /// stretches of one) share an edge, lying along each other (`clean` split overlapping
 /// edges where they end, so such edges have both ends in common). Then two rings that do
 /// not cross at a shared point lie each on one side of the other, whether or not they
-/// touch themselves too.
-fn meet_at_points(cx: &Context) -> bool {
+/// touch themselves too. With `not_itself`, also false where a ring touches itself.
+fn meet_at_points(cx: &Context, not_itself: bool) -> bool {
     let pool = &cx.pool;
     let mut i = 0;
     while i < cx.shared.len() {
@@ -426,6 +535,9 @@ fn meet_at_points(cx: &Context) -> bool {
         for (k, &n) in group.iter().enumerate() {
             let ahead = pool.p(pool.next(n));
             for &m in &group[k + 1..] {
+                if not_itself && pool.get(m).ring == pool.get(n).ring {
+                    return false;
+                }
                 let along = [pool.next(m), pool.prev(m)].map(|e| pool.p(e));
                 if along.contains(&ahead) {
                     return false;
@@ -1391,13 +1503,33 @@ mod tests {
         (order, vertices, starts)
     }
 
+    /// Nests the rings `scrambled` made (never by the sweep with `no_sweep`) and checks
+    /// every ring's depth against `want`, by the ring's place before scrambling; the
+    /// context, and whether the sweep counted the depths.
+    fn nested_as_built(
+        vertices: &[[f64; 2]],
+        starts: &[usize],
+        no_sweep: bool,
+        (order, want): (&[usize], &[u32]),
+        case: usize,
+    ) -> (Context, bool) {
+        let (mut cx, mut st) = cleaned(vertices, starts, false);
+        st.nest.no_sweep = no_sweep;
+        nest(&mut cx, &mut st.nest, Nesting::Auto).expect("valid");
+        for ring in cx.rings.iter().filter(|r| r.alive) {
+            let r = ring.input as usize;
+            assert_eq!(ring.depth, want[order[r]], "case {case}, ring {r}");
+        }
+        (cx, st.nest.swept)
+    }
+
     /// Holes touching the outer ring, each other and their islands at vertices, in any
     /// order, winding and quarter turn: the depths by construction, whether the rings are
-    /// few (counted directly) or many (the grid).
+    /// few (counted directly) or many (by the sweep, and without it through the grid).
     #[test]
-    fn touching_rings_nest_by_construction_directly_and_through_the_grid() {
+    fn touching_rings_nest_by_construction_directly_swept_and_through_the_grid() {
         let mut pick = crate::testing::random(0x7e57_1e55);
-        let (mut direct, mut grid) = (0, 0);
+        let (mut direct, mut swept, mut grid) = (0, 0, 0);
         for case in 0..400 {
             // an n × n grid of 10 × 10 cells in a square: in a cell at (x, y), maybe a
             // triangular hole from its lower left corner (on the outer ring in the first
@@ -1422,22 +1554,23 @@ mod tests {
                 }
             }
             let (order, vertices, starts) = scrambled(&mut rings, &mut pick);
-            let (mut cx, mut st) = cleaned(&vertices, &starts, false);
-            nest(&mut cx, &mut st.nest, Nesting::Auto).expect("valid");
-            // the grid is built only when the depths were not counted directly
-            if cx.edge_index.is_current() {
-                grid += 1;
-            } else {
-                direct += 1;
-            }
-            for ring in cx.rings.iter().filter(|r| r.alive) {
-                let r = ring.input as usize;
-                assert_eq!(ring.depth, want[order[r]], "case {case}, ring {r}");
+            // each input twice: as it comes, and never by the sweep
+            for no_sweep in [false, true] {
+                let (cx, swept_now) =
+                    nested_as_built(&vertices, &starts, no_sweep, (&order, &want), case);
+                // the grid is built only when the depths were not counted directly
+                if cx.edge_index.is_current() {
+                    grid += 1;
+                } else if swept_now {
+                    swept += 1;
+                } else {
+                    direct += 1;
+                }
             }
         }
         assert!(
-            direct > 50 && grid > 50,
-            "{direct} direct, {grid} through the grid"
+            direct > 50 && swept > 50 && grid > 50,
+            "{direct} direct, {swept} swept, {grid} through the grid"
         );
     }
 
@@ -1533,17 +1666,12 @@ mod tests {
                 }
             }
             let (order, vertices, starts) = scrambled(&mut rings, &mut pick);
-            let (mut cx, mut st) = cleaned(&vertices, &starts, false);
-            nest(&mut cx, &mut st.nest, Nesting::Auto).expect("valid");
+            let (cx, _) = nested_as_built(&vertices, &starts, false, (&order, &want), case);
             assert!(cx.edge_index.is_current(), "case {case}: the general rule");
             if cx.edge_index.listed().is_some() {
                 listed += 1;
             } else {
                 grid += 1;
-            }
-            for ring in cx.rings.iter().filter(|r| r.alive) {
-                let r = ring.input as usize;
-                assert_eq!(ring.depth, want[order[r]], "case {case}, ring {r}");
             }
         }
         assert!(
@@ -1553,9 +1681,9 @@ mod tests {
     }
 
     #[test]
-    fn many_small_rings_and_the_grid_agree() {
+    fn many_small_rings_the_sweep_and_the_grid_agree() {
         // a row of nested squares: few enough for the direct count, then as many again
-        // (past `DIRECT_WORK`) for the grid
+        // (past `DIRECT_WORK`) for the sweep and the grid
         for count in [3, 40] {
             let squares: Vec<Vec<[f64; 2]>> = (0..count)
                 .map(|k| {
@@ -1567,6 +1695,16 @@ mod tests {
             let got = depths(&refs, Nesting::Auto, false).expect("valid");
             for (k, d) in got.into_iter().enumerate() {
                 assert_eq!(d, Some((k as u32, k % 2 == 1)), "ring {k} of {count}");
+            }
+            // and without the sweep, through the grid
+            let (vertices, starts) = flatten(&refs);
+            let (mut cx, mut st) = cleaned(&vertices, &starts, false);
+            st.nest.no_sweep = true;
+            nest(&mut cx, &mut st.nest, Nesting::Auto).expect("valid");
+            assert_eq!(cx.edge_index.is_current(), count > 3);
+            for ring in cx.rings.iter().filter(|r| r.alive) {
+                let k = ring.input;
+                assert_eq!(ring.depth, k, "ring {k} of {count}, through the grid");
             }
         }
     }

@@ -20,8 +20,9 @@ use crate::structures::NodeId;
 const FAN: usize = 8;
 
 /// Levels at most: items, then nodes up to at most [`FAN`] at the top — enough for
-/// `FAN^(LEVELS - 1)` items, far more than an index holds.
-const LEVELS: usize = 16;
+/// `FAN^(LEVELS - 1)` items, more than the 2³² nodes an index can name. (Few levels, and
+/// `u32` cursors, keep [`BoxIter`] small: every grid query carries one and moves it.)
+const LEVELS: usize = 12;
 
 /// A bounding box: least x, least y, greatest x, greatest y.
 type Bbox = [f64; 4];
@@ -155,7 +156,7 @@ impl BoxTree {
             end: [0; LEVELS],
         };
         if top > 0 {
-            it.end[top] = self.nodes.len() - self.starts[top - 1];
+            it.end[top] = (self.nodes.len() - self.starts[top - 1]) as u32;
         }
         it
     }
@@ -172,8 +173,8 @@ pub(crate) struct BoxIter<'a> {
     /// The level being walked (0: the items); `starts.len()` is the top; past it, done.
     level: usize,
     /// Per level, the next box and the end of the boxes under the node above.
-    pos: [usize; LEVELS],
-    end: [usize; LEVELS],
+    pos: [u32; LEVELS],
+    end: [u32; LEVELS],
 }
 
 impl Iterator for BoxIter<'_> {
@@ -196,7 +197,7 @@ impl Iterator for BoxIter<'_> {
                 self.level += 1;
                 continue;
             }
-            let i = self.pos[level];
+            let i = self.pos[level] as usize;
             self.pos[level] += 1;
             if level == 0 {
                 let (n, bbox) = tree.items[i];
@@ -212,8 +213,8 @@ impl Iterator for BoxIter<'_> {
                     tree.starts[level - 1] - tree.starts[level - 2]
                 };
                 self.level = level - 1;
-                self.pos[level - 1] = FAN * i;
-                self.end[level - 1] = (FAN * (i + 1)).min(below);
+                self.pos[level - 1] = (FAN * i) as u32;
+                self.end[level - 1] = (FAN * (i + 1)).min(below) as u32;
             }
         }
         None

@@ -246,20 +246,27 @@ impl<const N: usize, M: Mask> Walk<'_, N, M> {
     /// whose neighbour was cut since they were queued; here both neighbours of every cut
     /// are queued again, or turn reflex and fail the test, so every entry is current.)
     fn quality(&mut self, start: usize) -> Option<Option<usize>> {
-        let mut queue = Queue::<N>::new();
+        let mut queue = Queue::<N>::new(self.s.nodes);
+        // a tip's key: as the clipper packs it, the rank's top bits above the node
+        let key = |w: &Self, v: usize| {
+            let rank = approx_angle_rank(w.p(w.prev(v)), w.p(v), w.p(w.next(v)));
+            (rank.to_bits() << 1) >> 32 << 32 | v as u64
+        };
         let push = |w: &Self, v: usize, queue: &mut Queue<N>| {
             if !w.is(w.reflex, v) {
-                let rank = approx_angle_rank(w.p(w.prev(v)), w.p(v), w.p(w.next(v)));
-                // as the clipper packs it: the rank's top bits above the node
-                queue.set(v, (rank.to_bits() << 1) >> 32 << 32 | v as u64);
+                queue.set(v, key(w, v));
             }
         };
+        // (every tip's key first, then the queue's order once)
         let seed = |w: &Self, from: usize, queue: &mut Queue<N>| {
             let mut v = from;
             for _ in 0..w.len {
-                push(w, v, queue);
+                if !w.is(w.reflex, v) {
+                    queue.tree[1][v] = key(w, v);
+                }
                 v = w.next(v);
             }
+            queue.settle(w.s.nodes);
         };
         seed(self, start, &mut queue);
         let (mut last, mut rescanned) = (start, false);
@@ -385,22 +392,37 @@ impl<const N: usize, M: Mask> Walk<'_, N, M> {
 
 /// The quality walk's queue over `N` nodes: each node's key, `u64::MAX` for none; the
 /// keys hold their node in their low bits, so the least key names its node. Up to 64
-/// nodes the least is found by a scan; more keep a tournament tree, at each inner entry
-/// the least key below it, so that the least of all is read at the root and a key
-/// changes in log₂ N steps (`N` is a power of two).
+/// nodes the keys come in blocks of [`BLOCK`], each block's least kept beside them: a key
+/// changes by a scan of its block, and the least of all is found by a scan of the blocks
+/// (a scan of every key per cut made the walk quadratic: a fifth of lorem_latin's
+/// instructions). More nodes keep a tournament tree, at each inner entry the least key
+/// below it, so that the least of all is read at the root and a key changes in log₂ N
+/// steps (`N` is a power of two).
 struct Queue<const N: usize> {
     /// Entries N.. are the nodes' keys; with the tree, entry 1 is the root, and entry i's
-    /// children are 2i and 2i + 1.
+    /// children are 2i and 2i + 1; without it, entry b is block b's least key.
     tree: [[u64; N]; 2],
+    /// Without the tree: whether the blocks' least keys are kept (else every key is
+    /// scanned, which costs less up to [`SCANNED`] nodes).
+    blocked: bool,
 }
+
+/// Up to this many nodes, the queue without the tree scans every key (measured: the
+/// blocks cost the Texas counties and letter_a 3–5% more time).
+const SCANNED: usize = 2 * BLOCK;
+
+/// Keys to a block of the queue without the tree.
+const BLOCK: usize = 8;
 
 impl<const N: usize> Queue<N> {
     /// Whether the queue keeps the tree.
     const TREE: bool = N > 64;
 
-    fn new() -> Self {
+    /// An empty queue for `nodes` nodes.
+    fn new(nodes: usize) -> Self {
         Queue {
             tree: [[u64::MAX; N]; 2],
+            blocked: !Self::TREE && nodes > SCANNED,
         }
     }
 
@@ -411,11 +433,40 @@ impl<const N: usize> Queue<N> {
     /// Sets node `v`'s key.
     fn set(&mut self, v: usize, key: u64) {
         self.tree[1][v] = key;
+        if !Self::TREE {
+            if self.blocked {
+                self.settle_block(v / BLOCK);
+            }
+            return;
+        }
         let mut i = N + v;
-        while Self::TREE && i > 1 {
+        while i > 1 {
             i /= 2;
             let least = self.get(2 * i).min(self.get(2 * i + 1));
             self.tree[0][i] = least;
+        }
+    }
+
+    /// Block `b`'s least key, kept beside the keys (without the tree): in pairs, so that
+    /// the minima do not wait on each other one by one.
+    fn settle_block(&mut self, b: usize) {
+        let k = &self.tree[1][b * BLOCK..(b + 1) * BLOCK];
+        let least = (k[0].min(k[1]).min(k[2].min(k[3]))).min(k[4].min(k[5]).min(k[6].min(k[7])));
+        self.tree[0][b] = least;
+    }
+
+    /// Orders the queue again after keys of the first `nodes` were written directly
+    /// (`tree[1]`).
+    fn settle(&mut self, nodes: usize) {
+        if Self::TREE {
+            for i in (1..N).rev() {
+                let least = self.get(2 * i).min(self.get(2 * i + 1));
+                self.tree[0][i] = least;
+            }
+        } else if self.blocked {
+            for b in 0..nodes.div_ceil(BLOCK) {
+                self.settle_block(b);
+            }
         }
     }
 
@@ -423,6 +474,9 @@ impl<const N: usize> Queue<N> {
     fn first(&self, nodes: usize) -> Option<usize> {
         let least = if Self::TREE {
             self.tree[0][1]
+        } else if self.blocked {
+            let blocks = &self.tree[0][..nodes.div_ceil(BLOCK)];
+            blocks.iter().min().map_or(u64::MAX, |&k| k)
         } else {
             (self.tree[1][..nodes].iter().min()).map_or(u64::MAX, |&k| k)
         };
@@ -479,5 +533,45 @@ mod tests {
         // the bands narrow the candidates (a triangle of random nodes spans much of the
         // box, so not by much here)
         assert!(boxed <= around && around < all, "{boxed} {around} {all}");
+    }
+
+    /// Every form of the quality walk's queue (keys scanned, in blocks, in the tree) gives
+    /// the least key, against a scan of the keys as set, while keys are set, raised,
+    /// lowered and cleared at random, with the first keys written directly and settled.
+    #[test]
+    fn every_queue_gives_the_least_key() {
+        fn check<const N: usize>(nodes: usize, below: &mut impl FnMut(u64) -> u64) -> bool {
+            let mut queue = Queue::<N>::new(nodes);
+            let mut keys = vec![u64::MAX; nodes];
+            // (as the walk's seed does: keys first, then the order)
+            for (v, key) in keys.iter_mut().enumerate() {
+                if below(3) > 0 {
+                    *key = below(1 << 20) << 32 | v as u64;
+                    queue.tree[1][v] = *key;
+                }
+            }
+            queue.settle(nodes);
+            for _ in 0..4 * nodes {
+                let least = keys.iter().min().copied().filter(|&k| k != u64::MAX);
+                let want = least.map(|k| (k & 0xffff_ffff) as usize);
+                assert_eq!(queue.first(nodes), want, "{nodes} nodes of {N}");
+                let v = below(nodes as u64) as usize;
+                keys[v] = match below(4) {
+                    0 => u64::MAX,
+                    _ => below(1 << 20) << 32 | v as u64,
+                };
+                queue.set(v, keys[v]);
+            }
+            queue.blocked
+        }
+        let mut below = random(0x9_0e0e);
+        let mut blocked = 0;
+        for nodes in 1..=64 {
+            blocked += usize::from(check::<64>(nodes, &mut below));
+        }
+        for nodes in [65, 100, 128] {
+            check::<128>(nodes, &mut below);
+        }
+        assert_eq!(blocked, 64 - SCANNED);
     }
 }

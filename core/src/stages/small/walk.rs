@@ -240,9 +240,7 @@ impl<const N: usize, M: Mask> Walk<'_, N, M> {
 
     /// The quality strategy (`Clipper::quality`): always the ear with the smallest angle
     /// at its tip, from a queue of convex tips by angle rank, then node (one entry per
-    /// node; the smallest found by a scan in the narrow form, kept at the root of a
-    /// tournament tree in the wide one, where a scan per cut would cost more than the
-    /// pipeline's heap). A tip is tested when it comes up. (The clipper also skips tips
+    /// node, see [`Queue`]). A tip is tested when it comes up. (The clipper also skips tips
     /// whose neighbour was cut since they were queued; here both neighbours of every cut
     /// are queued again, or turn reflex and fail the test, so every entry is current.)
     fn quality(&mut self, start: usize) -> Option<Option<usize>> {
@@ -391,13 +389,13 @@ impl<const N: usize, M: Mask> Walk<'_, N, M> {
 }
 
 /// The quality walk's queue over `N` nodes: each node's key, `u64::MAX` for none; the
-/// keys hold their node in their low bits, so the least key names its node. Up to 64
-/// nodes the keys come in blocks of [`BLOCK`], each block's least kept beside them: a key
-/// changes by a scan of its block, and the least of all is found by a scan of the blocks
-/// (a scan of every key per cut made the walk quadratic: a fifth of lorem_latin's
-/// instructions). More nodes keep a tournament tree, at each inner entry the least key
-/// below it, so that the least of all is read at the root and a key changes in log₂ N
-/// steps (`N` is a power of two).
+/// keys hold their node in their low bits, so the least key names its node. Up to
+/// [`SCANNED`] nodes the least is found by a scan of every key. Up to 64, the keys come in
+/// blocks of [`BLOCK`], each block's least kept beside them: a key changes by a scan of
+/// its block, and the least of all is found by a scan of the blocks (a scan of every key
+/// per cut made the walk quadratic: a fifth of lorem_latin's instructions). More nodes
+/// keep a tournament tree, at each inner entry the least key below it, so that the least
+/// of all is read at the root and a key changes in log₂ N steps (`N` is a power of two).
 struct Queue<const N: usize> {
     /// Entries N.. are the nodes' keys; with the tree, entry 1 is the root, and entry i's
     /// children are 2i and 2i + 1; without it, entry b is block b's least key.

@@ -395,17 +395,8 @@ fn direct_depths(cx: &mut Context) -> bool {
             continue;
         }
         let pool = &cx.pool;
-        let first = cx.rings[b].rightmost;
-        let off = |n: NodeId| nodes_at(cx, pool.p(n)) == 0;
-        let v = if cx.shared.is_empty() || off(first) {
-            first
-        } else if cx.lenient {
+        let Some(v) = test_node(cx, cx.rings[b].rightmost) else {
             return false;
-        } else {
-            match pool.ring(first).find(|&n| off(n)) {
-                Some(n) => n,
-                None => return false,
-            }
         };
         let v = pool.p(v);
         let around = |ring: &crate::context::Ring| {
@@ -421,6 +412,21 @@ fn direct_depths(cx: &mut Context) -> bool {
         cx.rings[b].depth = depth as u32;
     }
     true
+}
+
+/// The node of a ring whose winding numbers decide its depth where rings meet only at
+/// points ([`direct_depths`], [`swept_depths`]): its rightmost node `first`, or (strict
+/// mode) the first after it at no shared position, which lies on no other ring; `None`
+/// where there is none (lenient mode: where the rightmost is shared).
+fn test_node(cx: &Context, first: NodeId) -> Option<NodeId> {
+    let off = |n: NodeId| nodes_at(cx, cx.pool.p(n)) == 0;
+    if cx.shared.is_empty() || off(first) {
+        Some(first)
+    } else if cx.lenient {
+        None
+    } else {
+        cx.pool.ring(first).find(|&n| off(n))
+    }
 }
 
 /// [`direct_depths`] for more rings and edges, in strict mode where no ring touches
@@ -452,15 +458,8 @@ fn swept_depths(cx: &mut Context, s: &mut Scratch) -> bool {
     let mut edges = 0;
     for (b, ring) in cx.rings.iter().enumerate().filter(|(_, r)| r.alive) {
         edges += ring.len as usize;
-        let off = |n: NodeId| nodes_at(cx, pool.p(n)) == 0;
-        let first = ring.rightmost;
-        let v = if cx.shared.is_empty() || off(first) {
-            first
-        } else {
-            match pool.ring(first).find(|&n| off(n)) {
-                Some(n) => n,
-                None => return false,
-            }
+        let Some(v) = test_node(cx, ring.rightmost) else {
+            return false;
         };
         let p = pool.p(v);
         s.probes.push((p.y, p.x, b as u32));

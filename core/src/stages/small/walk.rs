@@ -260,7 +260,7 @@ impl<const N: usize, M: Mask> Walk<'_, N, M> {
             let mut v = from;
             for _ in 0..w.len {
                 if !w.is(w.reflex, v) {
-                    queue.tree[1][v] = key(w, v);
+                    queue.write(v, key(w, v));
                 }
                 v = w.next(v);
             }
@@ -430,7 +430,7 @@ impl<const N: usize> Queue<N> {
 
     /// Sets node `v`'s key.
     fn set(&mut self, v: usize, key: u64) {
-        self.tree[1][v] = key;
+        self.write(v, key);
         if !Self::TREE {
             if self.blocked {
                 self.settle_block(v / BLOCK);
@@ -445,6 +445,11 @@ impl<const N: usize> Queue<N> {
         }
     }
 
+    /// Writes node `v`'s key without ordering the queue: [`Queue::settle`] follows.
+    fn write(&mut self, v: usize, key: u64) {
+        self.tree[1][v] = key;
+    }
+
     /// Block `b`'s least key, kept beside the keys (without the tree): in pairs, so that
     /// the minima do not wait on each other one by one.
     fn settle_block(&mut self, b: usize) {
@@ -453,8 +458,8 @@ impl<const N: usize> Queue<N> {
         self.tree[0][b] = least;
     }
 
-    /// Orders the queue again after keys of the first `nodes` were written directly
-    /// (`tree[1]`).
+    /// Orders the queue again after keys of the first `nodes` were written
+    /// ([`Queue::write`]).
     fn settle(&mut self, nodes: usize) {
         if Self::TREE {
             for i in (1..N).rev() {
@@ -545,7 +550,7 @@ mod tests {
             for (v, key) in keys.iter_mut().enumerate() {
                 if below(3) > 0 {
                     *key = below(1 << 20) << 32 | v as u64;
-                    queue.tree[1][v] = *key;
+                    queue.write(v, *key);
                 }
             }
             queue.settle(nodes);

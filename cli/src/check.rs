@@ -12,7 +12,7 @@ use serde::Deserialize;
 use crate::input;
 use crate::layout::Layout;
 use crate::polygon_args::{NestingArg, PolygonArgs};
-use crate::triangulate::FillRuleArg;
+use crate::triangulate::{FillRuleArg, Precision};
 use crate::Failure;
 
 /// Arguments of `polytri check`.
@@ -37,7 +37,11 @@ RULE's region of each polygon (--merge: of all rings) exactly, up to the roundin
 added points, without overlapping (the oracle's check_fill: every triangle inside by the \
 exact winding number, their area against the region's by an exact slab decomposition). \
 Where a polygon added vertices, its failures are in its own numbers: its points, then \
-its added vertices.")]
+its added vertices.
+
+With --precision f32, INPUT is judged as `polytri triangulate --precision f32` reads it: \
+every coordinate rounded to the nearest f32 (RESULT's vertices may be INPUT's points as \
+written, which is what triangulate writes, or as rounded).")]
 pub struct Args {
     /// The polygons (`-` reads standard input)
     #[arg(value_name = "INPUT")]
@@ -59,6 +63,11 @@ pub struct Args {
     /// (RESULT's vertices: INPUT's points, then the added ones)
     #[arg(long, value_enum, value_name = "RULE")]
     pub fill_rule: Option<FillRuleArg>,
+
+    /// The precision RESULT was triangulated in (`polytri triangulate --precision`):
+    /// with f32, INPUT's coordinates are rounded to f32 before judging
+    #[arg(long, value_enum, default_value_t = Precision::F64)]
+    pub precision: Precision,
 }
 
 /// Result JSON as read: non-finite vertices were written as `null`.
@@ -86,12 +95,24 @@ struct AddedJson {
 /// INPUT's points, or when the triangulation is not valid (after printing the verdict).
 pub fn run(args: &Args) -> Result<(), Failure> {
     let input = input::read(&args.input)?;
-    let layout = Layout::new(&input.polygons);
+    let mut layout = Layout::new(&input.polygons);
     let result = read_result(&args.result)?;
+    // RESULT's first vertices are INPUT's points as written (or, with --precision f32, as
+    // rounded); the triangles are judged on the points as triangulated
+    let n = layout.vertices.len();
+    let file = &result.vertices[..n.min(result.vertices.len())];
+    compare_count(args, &layout.vertices, file)?;
+    let rounded = narrowed(args.precision, &layout.vertices);
+    let as_rounded = args.precision == Precision::F32 && same_points(&rounded, file);
+    if !as_rounded {
+        compare_vertices(args, &layout.vertices, file)?;
+    }
+    layout.vertices = rounded;
     if let Some(rule) = args.fill_rule {
         return run_fill(args, &layout, &result, rule);
     }
-    compare_vertices(args, &layout.vertices, &result.vertices)?;
+    // (and no added ones)
+    compare_count(args, &layout.vertices, &result.vertices)?;
     let options = if args.fast {
         CheckOptions::fast()
     } else {
@@ -125,8 +146,8 @@ fn run_fill(
     rule: FillRuleArg,
 ) -> Result<(), Failure> {
     let n = layout.vertices.len();
-    let (file, points) = result.vertices.split_at(n.min(result.vertices.len()));
-    compare_vertices(args, &layout.vertices, file)?;
+    // (the input's points were compared by `run`)
+    let points = &result.vertices[n.min(result.vertices.len())..];
     let name = input::display_name(&args.result);
     let added: Vec<[f64; 2]> = (points.iter().enumerate())
         .map(|(k, p)| match p {
@@ -272,6 +293,50 @@ fn read_result(path: &std::path::Path) -> Result<ResultJson, Failure> {
     })
 }
 
+/// The points as `polytri triangulate --precision` triangulates them: as read, or each
+/// coordinate rounded to the nearest `f32` (beyond its range: infinite, as there).
+fn narrowed(precision: Precision, points: &[[f64; 2]]) -> Vec<[f64; 2]> {
+    match precision {
+        Precision::F64 => points.to_vec(),
+        Precision::F32 => (points.iter())
+            .map(|p| p.map(|c| f64::from(c as f32)))
+            .collect(),
+    }
+}
+
+/// Whether `got` lists the points `expected` (as many, each equal).
+fn same_points(expected: &[[f64; 2]], got: &[[Option<f64>; 2]]) -> bool {
+    expected.len() == got.len() && expected.iter().zip(got).all(|(&e, &g)| same_point(e, g))
+}
+
+/// Whether a vertex of RESULT is the point `expected`: null stands for a non-finite
+/// coordinate; NaN equals nothing, so it is compared by kind.
+fn same_point(expected: [f64; 2], got: [Option<f64>; 2]) -> bool {
+    let same = |e: f64, g: Option<f64>| match g {
+        Some(g) => e == g || (e.is_nan() && g.is_nan()),
+        None => !e.is_finite(),
+    };
+    same(expected[0], got[0]) && same(expected[1], got[1])
+}
+
+/// As many vertices as points.
+fn compare_count(
+    args: &Args,
+    expected: &[[f64; 2]],
+    got: &[[Option<f64>; 2]],
+) -> Result<(), Failure> {
+    if expected.len() == got.len() {
+        return Ok(());
+    }
+    Err(Failure(format!(
+        "{} has {} vertices but {} has {} points: the result is not of this input",
+        input::display_name(&args.result),
+        got.len(),
+        input::display_name(&args.input),
+        expected.len()
+    )))
+}
+
 /// RESULT's vertices must be INPUT's points, else the indices mean something else.
 fn compare_vertices(
     args: &Args,
@@ -282,21 +347,8 @@ fn compare_vertices(
         input::display_name(&args.result),
         input::display_name(&args.input),
     );
-    if expected.len() != got.len() {
-        return Err(Failure(format!(
-            "{result} has {} vertices but {input} has {} points: the result is not of this input",
-            got.len(),
-            expected.len()
-        )));
-    }
-    // null stands for a non-finite coordinate; NaN equals nothing, so compare it by kind.
-    let same = |e: f64, g: Option<f64>| match g {
-        Some(g) => e == g || (e.is_nan() && g.is_nan()),
-        None => !e.is_finite(),
-    };
-    if let Some(v) = (0..expected.len())
-        .find(|&v| !(same(expected[v][0], got[v][0]) && same(expected[v][1], got[v][1])))
-    {
+    compare_count(args, expected, got)?;
+    if let Some(v) = (0..expected.len()).find(|&v| !same_point(expected[v], got[v])) {
         return Err(Failure(format!(
             "{result}: vertex {v} is {:?}, but point {v} of {input} is {:?}: the result is not of this input",
             got[v], expected[v]

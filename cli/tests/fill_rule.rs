@@ -303,3 +303,85 @@ fn check_judges_fill_rule_results() {
     }
     let _ = fs::remove_dir_all(dir);
 }
+
+/// A result of `triangulate --precision f32` is judged against the input as rounded to
+/// `f32` (`check --precision f32`): the crossing points were found between the rounded
+/// points, so against the points as written their triangles cover the wrong area.
+#[test]
+fn check_judges_f32_results_against_the_rounded_input() {
+    let dir = scratch("fill", "check_f32");
+    // a pentagram whose points are no f32 values: rounding moves every one of them
+    let shapes = "[[[0.1, 100.3], [-59.3, -81.7], [95.1, 31.3], [-95.1, 31.7], [59.3, -81.1]]]";
+    let file = write(&dir, "shapes.json", shapes);
+    let path = |p: &Path| p.to_str().expect("utf-8 path").to_owned();
+    for rule in [None, Some("even-odd"), Some("nonzero")] {
+        let mut extra = vec!["--precision", "f32"];
+        extra.extend(rule.map(|r| ["--fill-rule", r]).into_iter().flatten());
+        if rule.is_none() {
+            // strict mode refuses the crossing star: lenient takes it
+            extra.push("--lenient");
+        }
+        let (text, _) = triangulate(&file, &extra);
+        let result = write(&dir, "result.json", &text);
+        let check = |precision: &str| {
+            let mut args = vec!["check".to_owned(), path(&file), path(&result)];
+            args.extend(["--fast", "--precision", precision].map(str::to_owned));
+            args.extend(
+                rule.map(|r| ["--fill-rule".to_owned(), r.to_owned()])
+                    .into_iter()
+                    .flatten(),
+            );
+            let args: Vec<&str> = args.iter().map(String::as_str).collect();
+            polytri(&args)
+        };
+        let f32 = check("f32");
+        let stderr = String::from_utf8_lossy(&f32.stderr);
+        if let Some(rule) = rule {
+            assert!(f32.status.success(), "{rule}: {stderr}");
+            let wrong = check("f64");
+            let stderr = String::from_utf8_lossy(&wrong.stderr);
+            assert_eq!(wrong.status.code(), Some(1), "{rule}: {stderr}");
+            assert!(stderr.contains("area"), "{rule}: {stderr}");
+        } else {
+            // lenient triangles of crossing input are no valid triangulation of it, but
+            // they are judged: the vertices are the input's, as rounded
+            assert!(!stderr.contains("not of this input"), "{stderr}");
+        }
+    }
+    // a result listing the points as rounded is of this input too
+    let (text, _) = triangulate(&file, &["--precision", "f32", "--fill-rule", "even-odd"]);
+    let mut json: Value = serde_json::from_str(&text).expect("result JSON");
+    for v in json["vertices"].as_array_mut().expect("vertices") {
+        for c in v.as_array_mut().expect("vertex") {
+            *c = Value::from(f64::from(c.as_f64().expect("coordinate") as f32));
+        }
+    }
+    let result = write(&dir, "rounded.json", &json.to_string());
+    let out = polytri(&[
+        "check",
+        &path(&file),
+        &path(&result),
+        "--fast",
+        "--fill-rule",
+        "even-odd",
+        "--precision",
+        "f32",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // but not without --precision f32
+    let out = polytri(&[
+        "check",
+        &path(&file),
+        &path(&result),
+        "--fast",
+        "--fill-rule",
+        "even-odd",
+    ]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("vertex 0 is"), "{stderr}");
+    let _ = fs::remove_dir_all(dir);
+}

@@ -14,6 +14,8 @@ use super::{Triangulator, Worker};
 use crate::geom::Coord;
 use crate::report::{Added, Dropped, Repair, Report};
 use crate::{Error, Options};
+#[cfg(feature = "threads")]
+use std::sync::atomic::Ordering;
 
 /// Below this many vertices in all, the inputs run on the caller's thread: the call waits
 /// for the pool's threads to take up their share (they may find it done), and waking a
@@ -25,6 +27,11 @@ const PARALLEL_MIN_VERTICES: usize = 1024;
 /// Inputs a thread takes at a time from a parallel `triangulate_many`.
 #[cfg(feature = "threads")]
 const RUN: usize = 4;
+
+/// How long the caller of a parallel `triangulate_many` waits awake for the pool threads'
+/// last runs before it sleeps until they end: longer than a run of glyphs takes.
+#[cfg(feature = "threads")]
+const SPIN: std::time::Duration = std::time::Duration::from_micros(50);
 
 /// One input's outcome, kept so that its [`Report`] can borrow from the triangulator.
 #[derive(Debug, Default)]
@@ -287,6 +294,8 @@ impl Many {
                 }
             }
         };
+        // pool threads working on runs now
+        let busy = std::sync::atomic::AtomicUsize::new(0);
         pool.threads.in_place_scope(|scope| {
             for _ in 1..threads {
                 scope.spawn(|_| {
@@ -300,10 +309,20 @@ impl Many {
                         Err(std::sync::TryLockError::Poisoned(p)) => p.into_inner(),
                         Err(std::sync::TryLockError::WouldBlock) => return,
                     };
+                    busy.fetch_add(1, Ordering::AcqRel);
                     work(&mut worker);
+                    busy.fetch_sub(1, Ordering::AcqRel);
                 });
             }
             work(caller);
+            // The runs are all taken, the last ones maybe still running. The scope makes
+            // the caller sleep until they end, and waking it again takes longer than the
+            // run (several µs, on a machine whose idle cores sleep deeply): so first it
+            // waits here, awake, for a while.
+            let began = std::time::Instant::now();
+            while busy.load(Ordering::Acquire) > 0 && began.elapsed() < SPIN {
+                std::hint::spin_loop();
+            }
         });
         true
     }

@@ -45,6 +45,13 @@ pub(crate) struct Scratch {
     proof: ProofScratch,
     /// A ring's segments with their net walks (see `net_boundary_counter_clockwise`).
     net_edges: Vec<NetEdge>,
+    /// Tests: always search the rings as loaded in full where the filter dropped geometry
+    /// (the way before [`lost_edges_apart`]), and how often each way was taken: the lost
+    /// edges proved apart, the full search before the sweep, and after it.
+    #[cfg(test)]
+    full_search: bool,
+    #[cfg(test)]
+    searches: [usize; 3],
 }
 
 /// Runs the clean stage over every loaded ring. With `untwist` (lenient mode, the second
@@ -63,10 +70,32 @@ pub(crate) fn clean(cx: &mut Context, s: &mut Scratch, untwist: bool) -> Result<
     for r in 0..cx.rings.len() {
         filter_ring(cx, r);
     }
-    if !cx.lenient && dropped_geometry(cx, dropped_before) {
+    // (strict mode, dropped geometry: see `refuse_hidden_crossing`; where no edge the
+    // filter took away crosses another, any crossing is one of the filtered rings' too, and
+    // the full search waits until the sweep finds one: its error names the same pair)
+    let hidden = !cx.lenient && dropped_geometry(cx, dropped_before);
+    #[cfg(test)]
+    let shortcut = !s.full_search;
+    #[cfg(not(test))]
+    let shortcut = true;
+    let deferred = hidden && shortcut && few_lost_edges(cx, s) && lost_edges_apart(cx, s);
+    if hidden && !deferred {
+        #[cfg(test)]
+        {
+            s.searches[1] += 1;
+        }
         refuse_hidden_crossing(cx, s, dropped_before)?;
     }
-    let apart = match sweep_filtered(cx, s, untwist)? {
+    let swept = sweep_filtered(cx, s, untwist);
+    #[cfg(test)]
+    {
+        s.searches[0] += usize::from(deferred);
+        s.searches[2] += usize::from(deferred && swept.is_err());
+    }
+    if deferred && matches!(swept, Err(Error::EdgesCross { .. })) {
+        refuse_hidden_crossing(cx, s, dropped_before)?;
+    }
+    let apart = match swept? {
         Some(apart) => apart,
         None if untwist => return Ok(false),
         None => {
@@ -218,6 +247,86 @@ fn refuse_hidden_crossing(
     }
     refilter(cx, dropped_before);
     Ok(())
+}
+
+/// The most edges the filter took away (loaded edges at a dropped node) that
+/// [`lost_edges_apart`] compares with every loaded edge, and the most such pairs; more go
+/// to the full search.
+const LOST_MAX: usize = 32;
+const LOST_PAIRS_MAX: usize = 1 << 22;
+
+/// Lists in `s.flagged` the start node of every loaded edge the filtered rings lost: each
+/// run of dropped nodes between two kept ones, u and v, whose nodes do not all lie on the
+/// segment u–v that replaced them (a spike's tip, say: its edges lie outside that
+/// segment), and every edge of a ring dropped whole. False when there are more than
+/// [`LOST_MAX`], or more than [`LOST_PAIRS_MAX`] pairs with the loaded edges to compare.
+fn few_lost_edges(cx: &Context, s: &mut Scratch) -> bool {
+    s.flagged.clear();
+    let pool = &cx.pool;
+    let removed = |i: u32| pool.get(NodeId(i)).removed;
+    for &LoadedRing { first, len } in &cx.as_loaded {
+        let end = first + len;
+        let next = |i: u32| if i + 1 == end { first } else { i + 1 };
+        let Some(start) = (first..end).find(|&i| !removed(i)) else {
+            if s.flagged.len() + len as usize > LOST_MAX {
+                return false;
+            }
+            s.flagged.extend((first..end).map(NodeId));
+            continue;
+        };
+        // from kept node to kept node, round the ring once
+        let mut u = start;
+        loop {
+            let mut v = next(u);
+            while removed(v) {
+                v = next(v);
+            }
+            let (a, b) = (pool.p(NodeId(u)), pool.p(NodeId(v)));
+            let mut d = next(u);
+            while d != v && on_segment(a, b, pool.p(NodeId(d))) {
+                d = next(d);
+            }
+            if d != v {
+                let mut e = u;
+                while e != v {
+                    if s.flagged.len() == LOST_MAX {
+                        return false;
+                    }
+                    s.flagged.push(NodeId(e));
+                    e = next(e);
+                }
+            }
+            u = v;
+            if u == start {
+                break;
+            }
+        }
+    }
+    let loaded: usize = cx.as_loaded.iter().map(|r| r.len as usize).sum();
+    s.flagged.len() * loaded <= LOST_PAIRS_MAX
+}
+
+/// Whether no edge listed by [`few_lost_edges`] crosses a loaded edge properly: then the
+/// filter hid no crossing (every other loaded edge lies on an edge of the filtered rings).
+fn lost_edges_apart(cx: &Context, s: &Scratch) -> bool {
+    let pool = &cx.pool;
+    let loaded_next = |i: u32| {
+        let ring = cx.as_loaded[pool.get(NodeId(i)).ring as usize];
+        if i + 1 == ring.first + ring.len {
+            ring.first
+        } else {
+            i + 1
+        }
+    };
+    s.flagged.iter().all(|&l| {
+        let (a, b) = (pool.p(l), pool.p(NodeId(loaded_next(l.0))));
+        cx.as_loaded.iter().all(|&LoadedRing { first, len }| {
+            (first..first + len).all(|i| {
+                let next = if i + 1 == first + len { first } else { i + 1 };
+                !crate::geom::crosses(a, b, pool.p(NodeId(i)), pool.p(NodeId(next)))
+            })
+        })
+    })
 }
 
 /// The error for the edges starting at `a` and `b`, which cross.
@@ -672,6 +781,75 @@ mod tests {
             .iter()
             .filter(|&&(v, d)| (v == 0 || v == 9) && d == DropReason::Repeated);
         assert_eq!(closing.count(), 1, "{r:?}");
+    }
+
+    /// Strict mode, spikes and rings of no area dropped: proving that no edge the filter
+    /// took away crosses another, and searching the rest only once the sweep finds a
+    /// crossing, gives what searching every pair of loaded edges first gives — the same
+    /// rings, the same drops, or the same error naming the same edges.
+    #[test]
+    fn lost_edges_decide_as_the_full_search() {
+        let mut below = crate::testing::random(0x5eed_1e55);
+        let point = |below: &mut dyn FnMut(u64) -> u64| [below(100) as f64, below(100) as f64];
+        let (mut short, mut full) = (Scratch::default(), Scratch::default());
+        full.full_search = true;
+        let mut outcomes = [0usize; 2];
+        for case in 0..3000 {
+            // a ring round a centre with random radii, spikes at some of its vertices (out
+            // to a random point and back, crossing what lies between or not), maybe a
+            // second ring, maybe two vertices swapped (a crossing the filter hides not)
+            let m = 4 + below(20) as usize;
+            let mut ring: Vec<[f64; 2]> = (0..m)
+                .map(|k| {
+                    let a = k as f64 / m as f64 * core::f64::consts::TAU;
+                    let r = 10.0 + below(30) as f64;
+                    [(50.0 + r * a.cos()).round(), (50.0 + r * a.sin()).round()]
+                })
+                .collect();
+            let spikes = if case % 50 == 0 {
+                20
+            } else {
+                1 + below(3) as usize
+            };
+            for _ in 0..spikes {
+                let k = below(ring.len() as u64) as usize;
+                let at = ring[k];
+                ring.splice(k + 1..k + 1, [point(&mut below), at]);
+            }
+            if below(4) == 0 {
+                let (i, j) = (below(ring.len() as u64), below(ring.len() as u64));
+                ring.swap(i as usize, j as usize);
+            }
+            let mut rings = vec![ring];
+            if below(3) == 0 {
+                let (c, tip) = (point(&mut below), point(&mut below));
+                rings.push(vec![c, [c[0] + 3.0, c[1]], [c[0], c[1] + 3.0], c, tip]);
+            }
+            let (vertices, starts) =
+                crate::testing::flatten(&rings.iter().map(Vec::as_slice).collect::<Vec<_>>());
+            let run = |s: &mut Scratch| {
+                let mut cx = Context::default();
+                cx.reset(false);
+                crate::stages::load::load(&mut cx, &vertices, &starts).expect("finite");
+                let result = clean(&mut cx, s, false);
+                (result, kept(&cx), reasons(&cx))
+            };
+            let (a, b) = (run(&mut short), run(&mut full));
+            assert_eq!(a.0, b.0, "case {case}: {rings:?}");
+            if a.0.is_ok() {
+                assert_eq!((&a.1, &a.2), (&b.1, &b.2), "case {case}: {rings:?}");
+            }
+            outcomes[usize::from(a.0.is_ok())] += 1;
+        }
+        // every way taken: lost edges proved apart (then a crossing the sweep found, the
+        // full search after it), and the full search first (lost edges crossing, or many)
+        let [apart, first, after] = short.searches;
+        assert!(
+            apart > 300 && first > 300 && after > 30,
+            "{:?}",
+            short.searches
+        );
+        assert!(outcomes.iter().all(|&n| n > 300), "{outcomes:?}");
     }
 
     #[test]

@@ -46,6 +46,9 @@ const DATASETS: [&str; 7] = [
     "cjk_page",
 ];
 
+/// A real layer, under `docs/gis/` (beside `corpus/`): many small polygons, each on its own.
+const LAYERS: [&str; 1] = ["texas-counties"];
+
 /// How long one sample should last: long against the timer's resolution, short against
 /// the time budget.
 const SAMPLE: Duration = Duration::from_millis(1);
@@ -54,8 +57,9 @@ const SAMPLE: Duration = Duration::from_millis(1);
 #[derive(Debug, clap::Args)]
 #[command(after_help = "\
 Without FILES: earcut's benchmark fixtures (building, dude, water, water-huge, \
-water-huge2, water3) and the paper datasets of corpus/datasets/ (only the datasets with \
---paper), found from the current directory upwards or from where polytri was built.
+water-huge2, water3), the paper datasets of corpus/datasets/ and a real layer, the 254 \
+counties of Texas (docs/gis/texas-counties.geojson; only the datasets with --paper), \
+found from the current directory upwards or from where polytri was built.
 
 Columns: per implementation the median time of one run in milliseconds and, in \
 parentheses, its ratio to the fastest peer on that input (polytri columns too: below 1 \
@@ -355,7 +359,10 @@ fn load_inputs(
         });
         let datasets = (DATASETS.iter())
             .map(|d| (corpus.join("datasets").join(format!("{d}.json")), grouping));
-        fixtures.chain(datasets).collect()
+        let layers: &[&str] = if paper { &[] } else { &LAYERS };
+        let gis = corpus.join("../docs/gis");
+        let layers = (layers.iter()).map(|l| (gis.join(format!("{l}.geojson")), grouping));
+        fixtures.chain(datasets).chain(layers).collect()
     } else {
         files.iter().map(|f| (f.clone(), grouping)).collect()
     };
@@ -401,7 +408,8 @@ fn short_name(path: &Path) -> String {
     let base = Path::new(&name)
         .file_name()
         .map_or(name.clone(), |f| f.to_string_lossy().into_owned());
-    base.strip_suffix(".json").unwrap_or(&base).to_owned()
+    let base = base.strip_suffix(".json").unwrap_or(&base);
+    base.strip_suffix(".geojson").unwrap_or(base).to_owned()
 }
 
 /// One implementation's state while an input is measured.
@@ -703,7 +711,7 @@ mod tests {
         // earcut's convention: the default run times the same polygons either way
         let auto = load_inputs(&[], false, Grouping::default()).expect("the corpus");
         let given = load_inputs(&[], false, EARCUT_CONVENTION).expect("the corpus");
-        assert_eq!(auto.len(), FIXTURES.len() + DATASETS.len());
+        assert_eq!(auto.len(), FIXTURES.len() + DATASETS.len() + LAYERS.len());
         for ((name, auto), (_, given)) in auto.iter().zip(&given) {
             assert_eq!(auto.vertices, given.vertices, "{name}");
             assert_eq!(polygons(auto), polygons(given), "{name}");

@@ -303,7 +303,7 @@ fn few_lost_edges(cx: &Context, s: &mut Scratch) -> bool {
         }
     }
     let loaded: usize = cx.as_loaded.iter().map(|r| r.len as usize).sum();
-    s.flagged.len() * loaded <= LOST_PAIRS_MAX
+    s.flagged.len().saturating_mul(loaded) <= LOST_PAIRS_MAX
 }
 
 /// Whether no edge listed by [`few_lost_edges`] crosses a loaded edge properly: then the

@@ -357,30 +357,20 @@ fn check_judges_f32_results_against_the_rounded_input() {
         }
     }
     let result = write(&dir, "rounded.json", &json.to_string());
-    let out = polytri(&[
-        "check",
-        &path(&file),
-        &path(&result),
-        "--fast",
-        "--fill-rule",
-        "even-odd",
-        "--precision",
-        "f32",
-    ]);
+    let (file, result) = (path(&file), path(&result));
+    let check = |extra: &[&str]| {
+        let mut args = vec!["check", &file, &result, "--fast", "--fill-rule", "even-odd"];
+        args.extend_from_slice(extra);
+        polytri(&args)
+    };
+    let out = check(&["--precision", "f32"]);
     assert!(
         out.status.success(),
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
     // but not without --precision f32
-    let out = polytri(&[
-        "check",
-        &path(&file),
-        &path(&result),
-        "--fast",
-        "--fill-rule",
-        "even-odd",
-    ]);
+    let out = check(&[]);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(stderr.contains("vertex 0 is"), "{stderr}");
     let _ = fs::remove_dir_all(dir);

@@ -43,6 +43,23 @@ pub(crate) struct LoadedRing {
     pub len: u32,
 }
 
+impl LoadedRing {
+    /// The node after `i` (one of the ring's) as loaded: the next one, or the first after
+    /// the last.
+    pub fn next(self, i: u32) -> u32 {
+        if i + 1 == self.first + self.len {
+            self.first
+        } else {
+            i + 1
+        }
+    }
+
+    /// The ring's nodes as loaded, in input order.
+    pub fn nodes(self) -> core::ops::Range<u32> {
+        self.first..self.first + self.len
+    }
+}
+
 /// What the stages share: the node pool, the ring table, what was dropped and repaired,
 /// and what one stage found for the next. Stages are functions over this context and
 /// their own scratch.

@@ -21,7 +21,7 @@ use crate::context::{
 use crate::crossings::proof;
 use crate::crossings::proof::{Contact, ProofScratch};
 use crate::crossings::sweep::{self, Crossing, SweepScratch, Touch};
-use crate::geom::{cmp_xy, on_segment, orient2d, within_box, Orientation, Point};
+use crate::geom::{cmp_xy, crosses, on_segment, orient2d, within_box, Orientation, Point};
 use crate::report::{DropReason, Dropped, RepairKind};
 use crate::structures::NodeId;
 use crate::Error;
@@ -264,14 +264,13 @@ fn few_lost_edges(cx: &Context, s: &mut Scratch) -> bool {
     s.flagged.clear();
     let pool = &cx.pool;
     let removed = |i: u32| pool.get(NodeId(i)).removed;
-    for &LoadedRing { first, len } in &cx.as_loaded {
-        let end = first + len;
-        let next = |i: u32| if i + 1 == end { first } else { i + 1 };
-        let Some(start) = (first..end).find(|&i| !removed(i)) else {
-            if s.flagged.len() + len as usize > LOST_MAX {
+    for &ring in &cx.as_loaded {
+        let next = |i: u32| ring.next(i);
+        let Some(start) = ring.nodes().find(|&i| !removed(i)) else {
+            if s.flagged.len() + ring.len as usize > LOST_MAX {
                 return false;
             }
-            s.flagged.extend((first..end).map(NodeId));
+            s.flagged.extend(ring.nodes().map(NodeId));
             continue;
         };
         // from kept node to kept node, round the ring once
@@ -310,21 +309,16 @@ fn few_lost_edges(cx: &Context, s: &mut Scratch) -> bool {
 /// filter hid no crossing (every other loaded edge lies on an edge of the filtered rings).
 fn lost_edges_apart(cx: &Context, s: &Scratch) -> bool {
     let pool = &cx.pool;
-    let loaded_next = |i: u32| {
-        let ring = cx.as_loaded[pool.get(NodeId(i)).ring as usize];
-        if i + 1 == ring.first + ring.len {
-            ring.first
-        } else {
-            i + 1
-        }
-    };
-    s.flagged.iter().all(|&l| {
-        let (a, b) = (pool.p(l), pool.p(NodeId(loaded_next(l.0))));
-        cx.as_loaded.iter().all(|&LoadedRing { first, len }| {
-            (first..first + len).all(|i| {
-                let next = if i + 1 == first + len { first } else { i + 1 };
-                !crate::geom::crosses(a, b, pool.p(NodeId(i)), pool.p(NodeId(next)))
-            })
+    let edge = |ring: LoadedRing, i: u32| (pool.p(NodeId(i)), pool.p(NodeId(ring.next(i))));
+    let mut lost = [(Point::new(0.0, 0.0), Point::new(0.0, 0.0)); LOST_MAX];
+    for (k, l) in s.flagged.iter().enumerate().take(LOST_MAX) {
+        lost[k] = edge(cx.as_loaded[pool.get(*l).ring as usize], l.0);
+    }
+    let lost = &lost[..s.flagged.len().min(LOST_MAX)];
+    cx.as_loaded.iter().all(|&ring| {
+        ring.nodes().all(|i| {
+            let (c, d) = edge(ring, i);
+            lost.iter().all(|&(a, b)| !crosses(a, b, c, d))
         })
     })
 }
@@ -369,7 +363,7 @@ fn sweep_filtered(cx: &mut Context, s: &mut Scratch, untwist: bool) -> Result<Op
         let crossed = |a: NodeId| (pool.p(a), pool.p(pool.next(a)));
         let still_crossed = cx.crossings.iter().any(|c| {
             let ((a, b), (p, q)) = (crossed(c.a), crossed(c.b));
-            crate::geom::crosses(a, b, p, q)
+            crosses(a, b, p, q)
         });
         // (relinking may have left collinear turns)
         if still_crossed {
@@ -496,7 +490,7 @@ fn untwist_bow_ties(cx: &mut Context) -> bool {
             let pool = &mut cx.pool;
             let (a, q) = (pool.prev(p), pool.next(p));
             let b = pool.next(q);
-            if a != b && crate::geom::crosses(pool.p(a), pool.p(p), pool.p(q), pool.p(b)) {
+            if a != b && crosses(pool.p(a), pool.p(p), pool.p(q), pool.p(b)) {
                 pool.get_mut(a).next = q;
                 pool.get_mut(q).prev = a;
                 pool.get_mut(q).next = p;

@@ -78,7 +78,8 @@ polytri-fast for the check's share. polytri-threads is polytri-fast with the pol
 file spread over every core (triangulate_many; one polygon of 262,144 vertices or more is clipped by mark-and-cut on them). On \
 request (--polytri): even-odd and seidel-even-odd read all of a file's rings at once by \
 the even-odd fill rule (crossing edges split at exactly rounded points), with the fast \
-ear clipper or Seidel's trapezoidation, as lyon and i-triangle read them; seidel is \
+ear clipper or Seidel's trapezoidation, as lyon and i-triangle read them; even-odd-each \
+takes a file's polygons one at a time by the same rule, as polytri-fast takes them; seidel is \
 Seidel's trapezoidation in strict mode. The last \
 row is the geometric mean of the ratios. Files with several polygons go to earcut and \
 polytri one polygon at a time, to the others all at once.
@@ -117,8 +118,8 @@ pub struct Args {
     pub peers: Option<Vec<Peer>>,
 
     /// polytri configurations, comma-separated: fast, lenient, quality, check, threads,
-    /// even-odd, seidel, seidel-even-odd [default: the first five; --scaling: the first
-    /// four]
+    /// even-odd, even-odd-each, seidel, seidel-even-odd [default: the first five;
+    /// --scaling: the first four]
     #[arg(long, value_delimiter = ',', value_name = "CONFIGS",
           value_parser = parse_polytri)]
     pub polytri: Option<Vec<Implementation>>,
@@ -196,7 +197,7 @@ fn parse_polytri(s: &str) -> Result<Implementation, String> {
         .into_iter()
         .find(|imp| imp.name().eq_ignore_ascii_case(&full))
         .ok_or_else(|| {
-            format!("unknown polytri configuration '{s}' (known: fast, lenient, quality, check, threads, even-odd, seidel, seidel-even-odd)")
+            format!("unknown polytri configuration '{s}' (known: fast, lenient, quality, check, threads, even-odd, even-odd-each, seidel, seidel-even-odd)")
         })
 }
 

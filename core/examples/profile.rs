@@ -1,5 +1,5 @@
 //! Runs polytri on one rings or shapes JSON file many times, for a profiler:
-//! `cargo run --release -p polytri --example profile -- FILE [RUNS] [fast|lenient|quality|check|even-odd|threads:N] [first|auto]`
+//! `cargo run --release -p polytri --example profile -- FILE [RUNS] [fast|lenient|quality|check|even-odd|nonzero|threads:N] [first|auto]`
 //! (`threads:N` needs `--features threads`).
 //! With `NO_SMALL` set in the environment every input takes the whole pipeline, never
 //! the small stage.
@@ -53,6 +53,7 @@ fn main() {
         "lenient" => options.with_lenient(true),
         "quality" => options.with_strategy(Strategy::Quality),
         "even-odd" => options.with_fill_rule(polytri::FillRule::EvenOdd),
+        "nonzero" => options.with_fill_rule(polytri::FillRule::NonZero),
         other => panic!("unknown mode {other}"),
     };
     let mut tri = Triangulator::<f64>::new();

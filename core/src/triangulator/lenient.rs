@@ -202,6 +202,28 @@ pub(crate) fn triangulate<T: Coord>(
     })
 }
 
+/// Strict mode's call from where [`pipeline::check_input`] passed on `cx`: joins touching
+/// rings, bridges the holes and clips, as [`triangulate`] would go on (the fill rules'
+/// way for input strict mode reads as they do).
+pub(crate) fn finish_checked(
+    cx: &mut Context,
+    st: &mut Stages,
+    re: &mut Reruns,
+    strategy: Strategy,
+    out: &mut Vec<[u32; 3]>,
+) -> Result<Outcome, Error> {
+    out.clear();
+    re.careful.bridges = false;
+    let holes = pipeline::join(cx, st)?;
+    bridge::bridge(cx, &mut st.bridge, &mut re.careful)?;
+    let polygons = clip::clip(cx, &mut st.clip, strategy, false, out)?;
+    Ok(Outcome {
+        polygons,
+        holes,
+        deviation: 0.0,
+    })
+}
+
 /// The whole pipeline once; returns the numbers of polygons and holes. `None` when asked
 /// to `untwist` and there was no bow tie to untwist: the run would repeat the last one.
 /// Bridges are chosen carefully when `re.careful` says so; that run starts from the plain

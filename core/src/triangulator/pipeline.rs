@@ -43,6 +43,15 @@ pub(crate) struct Small {
 }
 
 impl Small {
+    /// [`small::rings_run`] for the input the stage checked last.
+    pub(crate) fn rings_run(&self) -> Option<bool> {
+        if self.used_wide {
+            small::rings_run(&self.wide)
+        } else {
+            small::rings_run(&self.narrow)
+        }
+    }
+
     /// The numbers of polygons and holes, and twice the area (as lenient mode measures
     /// it), of the input the stage took last.
     pub(crate) fn counts_and_area(&self) -> (usize, usize, f64) {
@@ -136,8 +145,13 @@ pub(crate) fn check_input<T: Coord>(
     if !load_and_clean(cx, st, vertices, ring_starts, untwist)? {
         return Ok(false);
     }
-    nest::nest(cx, &mut st.nest, nesting)?;
+    nest(cx, st, nesting)?;
     Ok(true)
+}
+
+/// `nest`: every live ring's depth, holes turned clockwise (after [`load_and_clean`]).
+pub(crate) fn nest(cx: &mut Context, st: &mut Stages, nesting: Nesting) -> Result<(), Error> {
+    nest::nest(cx, &mut st.nest, nesting)
 }
 
 /// `load`, `clean` and (lenient, no crossings) `lobes`: every ring proper and oriented

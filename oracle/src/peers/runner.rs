@@ -39,6 +39,11 @@ pub enum Implementation {
     /// even–odd one (as lyon and i_triangle read their input here). Not in the default
     /// set: ask for it with `--polytri even-odd`.
     PolytriEvenOdd,
+    /// polytri, fast strategy, with the even–odd fill rule one polygon at a time, as
+    /// [`PolytriFast`](Self::PolytriFast) takes them (a layer's polygons each on its own,
+    /// as `polytri triangulate --fill-rule even-odd` reads a file). Not in the default
+    /// set: `--polytri even-odd-each`.
+    PolytriEvenOddEach,
     /// polytri with [`polytri::Strategy::Seidel`] (trapezoidation), strict. Not in the
     /// default set: ask for it with `--polytri seidel`.
     PolytriSeidel,
@@ -60,13 +65,14 @@ impl Implementation {
     ];
 
     /// Every polytri configuration: the default ones, then the optional ones.
-    pub const POLYTRI_ALL: [Implementation; 8] = [
+    pub const POLYTRI_ALL: [Implementation; 9] = [
         Implementation::PolytriFast,
         Implementation::PolytriLenient,
         Implementation::PolytriQuality,
         Implementation::PolytriCheck,
         Implementation::PolytriThreads,
         Implementation::PolytriEvenOdd,
+        Implementation::PolytriEvenOddEach,
         Implementation::PolytriSeidel,
         Implementation::PolytriSeidelEvenOdd,
     ];
@@ -104,6 +110,7 @@ impl Implementation {
             Implementation::PolytriCheck => "polytri-check",
             Implementation::PolytriThreads => "polytri-threads",
             Implementation::PolytriEvenOdd => "polytri-even-odd",
+            Implementation::PolytriEvenOddEach => "polytri-even-odd-each",
             Implementation::PolytriSeidel => "polytri-seidel",
             Implementation::PolytriSeidelEvenOdd => "polytri-seidel-even-odd",
             Implementation::Peer(peer) => peer.name(),
@@ -265,6 +272,10 @@ impl Runner {
                 polytri::Options::new().with_strategy(polytri::Strategy::Seidel),
             ),
             Implementation::PolytriEvenOdd => self.polytri_fill(prepared, polytri::Strategy::Fast),
+            Implementation::PolytriEvenOddEach => self.polytri(
+                prepared,
+                polytri::Options::new().with_fill_rule(polytri::FillRule::EvenOdd),
+            ),
             Implementation::PolytriSeidelEvenOdd => {
                 self.polytri_fill(prepared, polytri::Strategy::Seidel)
             }

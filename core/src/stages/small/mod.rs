@@ -754,6 +754,19 @@ fn reverse<const N: usize, M: Mask>(s: &mut Scratch<N, M>, r: usize) {
     }
 }
 
+/// For the rings checked last, where no two meet (nor one itself): `Some(true)` when
+/// every ring runs as given, in input order, the way the check turned it (the outer ring
+/// counter-clockwise, holes clockwise), `Some(false)` when every ring runs against it;
+/// `None` where rings touch, or some run each way.
+pub(crate) fn rings_run<const N: usize, M: Mask>(s: &Scratch<N, M>) -> Option<bool> {
+    if s.touches > 0 || s.tees > 0 || s.rings == 0 {
+        return None;
+    }
+    let given = |r: usize| s.reversed & bit(usize::from(s.start[r])) == M::NONE;
+    let first = given(0);
+    (1..s.rings).all(|r| given(r) == first).then_some(first)
+}
+
 /// The number of holes of the polygon checked last.
 pub(crate) fn hole_count<const N: usize, M: Mask>(s: &Scratch<N, M>) -> usize {
     s.hole_rings.count_ones() as usize

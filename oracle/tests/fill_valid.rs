@@ -1,6 +1,6 @@
 //! Fill rules on input without crossings: every valid generator family, earcut's fixtures
 //! and the corpus's own cases, each also with its rings' orientations flipped at random,
-//! under every fill rule, in both ear-clipping strategies and both precisions, judged by
+//! under every fill rule, in every strategy and both precisions, judged by
 //! the oracle's independent `check_fill`. Where strict mode reads the input as the rule
 //! does (even–odd on rings that do not cross; nonzero, positive and negative where every
 //! ring winds the way containment nests it), the triangulator takes strict mode's path
@@ -83,7 +83,7 @@ fn judge_all(name: &str, input: &Input, failures: &mut Vec<String>) {
             Precision::F32 => input.to_f32(),
         };
         for rule in FillRule::ALL {
-            for strategy in [Strategy::Fast, Strategy::Quality] {
+            for strategy in [Strategy::Fast, Strategy::Quality, Strategy::Seidel] {
                 let what = match precision {
                     Precision::F64 => judge(
                         &input.vertices,

@@ -52,20 +52,17 @@ pub(crate) fn triangulate<T: Coord>(
     // Most real input is valid (a layer's polygons, a glyph without overlapping strokes):
     // where strict mode reads it as the rule does, its result is the rule's region,
     // without resolving anything (see [`strict_first`]).
-    let tried = if options.strategy == Strategy::Seidel {
-        Strict::Declined
-    } else {
-        strict_first(
-            cx,
-            st,
-            re,
-            vertices,
-            ring_starts,
-            rule,
-            options.strategy,
-            out,
-        )
-    };
+    let tried = strict_first(
+        cx,
+        st,
+        re,
+        fs,
+        vertices,
+        ring_starts,
+        rule,
+        options.strategy,
+        out,
+    );
     let uncrossed = match tried {
         Strict::Made(made) => {
             cx.added.clear();
@@ -197,8 +194,9 @@ enum Strict {
     Declined,
 }
 
-/// Strict mode's triangulation (`Nesting::Auto`, the strategy) where it is the rule's
-/// region, which is so on most real input.
+/// Strict mode's triangulation (`Nesting::Auto`, the strategy; for `Strategy::Seidel`,
+/// the trapezoidation of strict mode's checked rings) where it is the rule's region,
+/// which is so on most real input.
 ///
 /// Where strict mode's check passes, no two edges cross, and strict mode fills the
 /// faces of the rings' arrangement at even depth: the even–odd rule's region. For the
@@ -216,6 +214,7 @@ fn strict_first<T: Coord>(
     cx: &mut Context,
     st: &mut Stages,
     re: &mut Reruns,
+    fs: &mut Scratch,
     vertices: &[[T; 2]],
     ring_starts: &[usize],
     rule: FillRule,
@@ -225,10 +224,11 @@ fn strict_first<T: Coord>(
     if rule == FillRule::AbsGeqTwo {
         return Strict::Declined;
     }
+    let seidel = strategy == Strategy::Seidel;
     // a small input: the small stage checks and triangulates in one pass (the pipeline
     // where it declines); for the rules other than even–odd it says first how the rings
     // run (and where it declines, the pipeline's check below decides)
-    if small::nodes(vertices.len(), ring_starts).is_some() {
+    if !seidel && small::nodes(vertices.len(), ring_starts).is_some() {
         let reads = if rule == FillRule::EvenOdd {
             Some(true)
         } else {
@@ -280,6 +280,20 @@ fn strict_first<T: Coord>(
         if !reads_as_nested(rule, run) {
             return Strict::Checked;
         }
+    }
+    if seidel {
+        // the checked rings as `Strategy::Seidel` takes valid input without a fill rule
+        // (rings winding twice are strict mode's error, found where rings touch)
+        let Some(counts) = checked_rings(cx, fs) else {
+            return Strict::Checked;
+        };
+        if !cx.shared.is_empty() && pipeline::join(cx, st).is_err() {
+            return Strict::Checked;
+        }
+        return match seidel_checked(fs, vertices, counts, out) {
+            Ok(made) => Strict::Made(made),
+            Err(_) => Strict::Checked,
+        };
     }
     match lenient::finish_checked(cx, st, re, strategy, out) {
         Ok(made) => Strict::Made(made),

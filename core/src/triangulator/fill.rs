@@ -236,6 +236,23 @@ fn strict_first<T: Coord>(
                 .then(|| reads_as_nested(rule, st.small.rings_run()))
         };
         match reads {
+            // (checked already: the small stage's clip, where it takes the input)
+            Some(true)
+                if rule != FillRule::EvenOdd
+                    && pipeline::small_ring_checked(
+                        st,
+                        vertices,
+                        strategy == Strategy::Quality,
+                        out,
+                    ) =>
+            {
+                let (polygons, holes, _) = st.small.counts_and_area();
+                return Strict::Made(Outcome {
+                    polygons,
+                    holes,
+                    deviation: 0.0,
+                });
+            }
             Some(true) => {
                 let strict = Options::new()
                     .with_strategy(strategy)

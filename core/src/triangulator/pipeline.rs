@@ -88,19 +88,43 @@ pub(crate) fn small_ring<T: Coord>(
     lenient: bool,
     out: &mut Vec<[u32; 3]>,
 ) -> bool {
-    // (a ring that mark-and-cut would take keeps the pipeline: the harness lowers its
-    // size so that small inputs take its rounds)
-    #[cfg(feature = "threads")]
-    let rounds = (st.clip.threads.as_ref()).is_some_and(|t| vertices.len() >= t.min);
-    #[cfg(not(feature = "threads"))]
-    let rounds = false;
-    st.small.took = !rounds
+    st.small.took = !mark_and_cut_takes(st, vertices.len())
         && small_ring_valid(cx, st, vertices, ring_starts, nesting, lenient)
-        && if st.small.used_wide {
-            small::clip(&mut st.small.wide, quality, lenient, out)
-        } else {
-            small::clip(&mut st.small.narrow, quality, lenient, out)
-        };
+        && small_clip(st, quality, lenient, out);
+    st.small.took
+}
+
+/// Whether mark-and-cut would take a ring of `vertices`: then it keeps the pipeline (the
+/// harness lowers mark-and-cut's size so that small inputs take its rounds).
+fn mark_and_cut_takes(st: &Stages, vertices: usize) -> bool {
+    #[cfg(feature = "threads")]
+    let rounds = (st.clip.threads.as_ref()).is_some_and(|t| vertices >= t.min);
+    #[cfg(not(feature = "threads"))]
+    let rounds = {
+        let _ = (st, vertices);
+        false
+    };
+    rounds
+}
+
+/// The small stage's clip of the input [`small_ring_valid`] took last.
+fn small_clip(st: &mut Stages, quality: bool, lenient: bool, out: &mut Vec<[u32; 3]>) -> bool {
+    if st.small.used_wide {
+        small::clip(&mut st.small.wide, quality, lenient, out)
+    } else {
+        small::clip(&mut st.small.narrow, quality, lenient, out)
+    }
+}
+
+/// [`small_ring`] after [`small_ring_valid`] took the input (strict): the clip, where
+/// `small_ring` would clip it.
+pub(crate) fn small_ring_checked<T: Coord>(
+    st: &mut Stages,
+    vertices: &[[T; 2]],
+    quality: bool,
+    out: &mut Vec<[u32; 3]>,
+) -> bool {
+    st.small.took = !mark_and_cut_takes(st, vertices.len()) && small_clip(st, quality, false, out);
     st.small.took
 }
 

@@ -260,6 +260,15 @@ fn strict_first<T: Coord>(
                 return match lenient::triangulate(cx, st, re, vertices, ring_starts, &strict, out) {
                     Ok(made) => Strict::Made(made),
                     Err(Error::EdgesCross { .. }) => Strict::Crossed,
+                    // (refused after its crossing check passed: by nesting, joining,
+                    // bridging or clipping)
+                    Err(
+                        Error::RingsCrossAtVertex { .. }
+                        | Error::HoleOutside { .. }
+                        | Error::RingsOverlap { .. }
+                        | Error::RingWindsTwice { .. }
+                        | Error::LobesWindOpposite { .. },
+                    ) => Strict::Checked,
                     Err(_) => Strict::Declined,
                 };
             }

@@ -9,7 +9,7 @@
 
 mod common;
 
-use common::{corpus_dir, earcut_fixtures, Rng};
+use common::{corpus_dir, earcut_fixtures, seen, Rng};
 use polytri::{Coord, DropReason, FillRule, Nesting, Options, Strategy, Triangulator};
 use polytri_oracle::replay::{load_dir, Precision};
 use polytri_oracle::{check_fill, generate, Family, Input, Params};
@@ -78,10 +78,7 @@ fn judge<T: Coord>(
 /// Every rule, strategy and precision on one input; failures named after `name`.
 fn judge_all(name: &str, input: &Input, failures: &mut Vec<String>) {
     for precision in [Precision::F64, Precision::F32] {
-        let seen = match precision {
-            Precision::F64 => input.clone(),
-            Precision::F32 => input.to_f32(),
-        };
+        let seen = seen(input, precision);
         for rule in FillRule::ALL {
             for strategy in [Strategy::Fast, Strategy::Quality, Strategy::Seidel] {
                 let what = match precision {

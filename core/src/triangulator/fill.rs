@@ -150,8 +150,19 @@ fn report_unused(
     ring_starts: &[usize],
     out: &[[u32; 3]],
 ) {
-    dropped.clear();
-    let n = r.vertex_hot.len();
+    mark_used(used, r.vertex_hot.len(), out);
+    let used = &*used;
+    list_unused(dropped, used, ring_starts, |i| {
+        let stands_for = r.hot_out.get(r.vertex_hot[i] as usize).map(|&o| o as usize);
+        match stands_for {
+            Some(o) if o != i && used.get(o) == Some(&true) => DropReason::Coincident,
+            _ => DropReason::OffBoundary,
+        }
+    });
+}
+
+/// `used[v]`: whether a triangle of `out` uses vertex `v`, for the first `n` vertices.
+fn mark_used(used: &mut Vec<bool>, n: usize, out: &[[u32; 3]]) {
     used.clear();
     used.resize(n, false);
     for &v in out.iter().flatten() {
@@ -159,23 +170,26 @@ fn report_unused(
             *u = true;
         }
     }
+}
+
+/// Every input vertex not `used` into `dropped` (cleared first), with its ring and the
+/// `reason` for it.
+fn list_unused(
+    dropped: &mut Vec<Dropped>,
+    used: &[bool],
+    ring_starts: &[usize],
+    reason: impl Fn(usize) -> DropReason,
+) {
+    dropped.clear();
     let mut ring = 0;
-    for (i, &hot) in r.vertex_hot.iter().enumerate() {
+    for i in (0..used.len()).filter(|&i| !used[i]) {
         while ring + 1 < ring_starts.len() && ring_starts[ring + 1] <= i {
             ring += 1;
         }
-        if used[i] {
-            continue;
-        }
-        let stands_for = r.hot_out.get(hot as usize).map(|&o| o as usize);
-        let reason = match stands_for {
-            Some(o) if o != i && used.get(o) == Some(&true) => DropReason::Coincident,
-            _ => DropReason::OffBoundary,
-        };
         dropped.push(Dropped {
             vertex: i as u32,
             ring: ring as u32,
-            reason,
+            reason: reason(i),
         });
     }
 }
@@ -355,52 +369,37 @@ fn report_unused_input<T: Coord>(
     ring_starts: &[usize],
     out: &[[u32; 3]],
 ) {
-    dropped.clear();
-    let used = &mut fs.used;
-    used.clear();
-    used.resize(vertices.len(), false);
-    for &v in out.iter().flatten() {
-        if let Some(u) = used.get_mut(v as usize) {
-            *u = true;
-        }
-    }
+    mark_used(&mut fs.used, vertices.len(), out);
+    let used = &fs.used;
     let point = |i: usize| vertices[i].map(|c| c.to_f64() + 0.0);
     // the unused vertices' positions, sorted, once each, marked where a used vertex is
     let unused = &mut fs.unused;
     unused.clear();
     let positions = (0..vertices.len()).filter(|&i| !used[i]);
     unused.extend(positions.map(|i| (point(i), false)));
-    if unused.is_empty() {
-        return;
-    }
     let order = |a: &[f64; 2], b: &[f64; 2]| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1]));
-    unused.sort_unstable_by(|a, b| order(&a.0, &b.0));
-    unused.dedup_by(|a, b| order(&a.0, &b.0).is_eq());
-    for i in (0..vertices.len()).filter(|&i| used[i]) {
-        let p = point(i);
-        if let Ok(k) = unused.binary_search_by(|u| order(&u.0, &p)) {
-            unused[k].1 = true;
+    if !unused.is_empty() {
+        unused.sort_unstable_by(|a, b| order(&a.0, &b.0));
+        unused.dedup_by(|a, b| order(&a.0, &b.0).is_eq());
+        for i in (0..vertices.len()).filter(|&i| used[i]) {
+            let p = point(i);
+            if let Ok(k) = unused.binary_search_by(|u| order(&u.0, &p)) {
+                unused[k].1 = true;
+            }
         }
     }
-    let mut ring = 0;
-    for i in (0..vertices.len()).filter(|&i| !used[i]) {
-        while ring + 1 < ring_starts.len() && ring_starts[ring + 1] <= i {
-            ring += 1;
-        }
+    let unused = &*unused;
+    list_unused(dropped, used, ring_starts, |i| {
         let p = point(i);
         let held = unused
             .binary_search_by(|u| order(&u.0, &p))
             .is_ok_and(|k| unused[k].1);
-        dropped.push(Dropped {
-            vertex: i as u32,
-            ring: ring as u32,
-            reason: if held {
-                DropReason::Coincident
-            } else {
-                DropReason::OffBoundary
-            },
-        });
-    }
+        if held {
+            DropReason::Coincident
+        } else {
+            DropReason::OffBoundary
+        }
+    });
 }
 
 /// `Strategy::Seidel` without a fill rule, on input strict mode has checked (`load`,

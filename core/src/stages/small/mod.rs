@@ -40,9 +40,9 @@
 //! exact range of the signs (`geom::orient_exact`), a spike in lenient
 //! mode or one hiding a crossing, a ring left with fewer than three vertices (but for the
 //! only ring in strict mode, dropped whole as `clean` drops it), two edges crossing, more
-//! than eight nodes at one position, a ring touching itself at its rightmost vertex,
-//! touching rings in lenient mode or joined in a way `touch` decides by another rule, a
-//! ring with every vertex on others whose vertices disagree on its nesting, rings nested
+//! than eight nodes at one position, a ring touching itself at its rightmost vertex or
+//! (lenient mode) anywhere, touching rings joined in a way `touch` decides by another
+//! rule, a ring with every vertex on others whose vertices disagree on its nesting, rings nested
 //! otherwise, a bridge target the pipeline would choose by a fallback, a clockwise last
 //! triangle or a ring the walk cannot finish. The triangulator then runs the pipeline
 //! from the start, which finds and reports the same things as without this stage.
@@ -795,12 +795,8 @@ pub(crate) fn clip<const N: usize, M: Mask>(
     lenient: bool,
     out: &mut Vec<[u32; 3]>,
 ) -> bool {
-    if s.touches > 0 && (lenient || !touch::join(s)) {
-        // (lenient mode cuts rings into lobes first, and its repairs were tuned on
-        // them: the pipeline's)
-        return false;
-    }
     if lenient {
+        // (measured before touching rings are joined, as the pipeline measures)
         s.area = 0.0;
         for r in 0..s.rings {
             let mut sum = 0.0;
@@ -809,6 +805,14 @@ pub(crate) fn clip<const N: usize, M: Mask>(
             }
             s.area += if r == s.outer { sum.abs() } else { -sum.abs() };
         }
+    }
+    // (lenient mode cuts a ring touching itself into lobes first, and its repairs were
+    // tuned on them: the pipeline's)
+    let self_touch = |s: &Scratch<N, M>| {
+        (0..s.shared_len).any(|i| touch::touches_own_ring(s, usize::from(s.shared[i])))
+    };
+    if s.touches > 0 && ((lenient && self_touch(s)) || !touch::join(s)) {
+        return false;
     }
     if s.hole_rings != 0 && !holes::bridge(s) {
         return false;

@@ -387,7 +387,7 @@ fn direct_depths(cx: &mut Context) -> bool {
         (alive, edges) = (alive + 1, edges + ring.len as usize);
     }
     // (the size first: it is cheaper to learn than where the rings meet)
-    if alive * edges > DIRECT_WORK || !meet_at_points(cx, false) {
+    if alive * edges > DIRECT_WORK || !meet_at_points(cx) {
         return false;
     }
     for b in 0..cx.rings.len() {
@@ -434,7 +434,13 @@ fn test_node(cx: &Context, first: NodeId) -> Option<NodeId> {
 /// left it), whose winding number round a point on no ring is 1 inside and 0 outside. So
 /// the depth of ring b, the number of rings round its test node (chosen as
 /// [`direct_depths`] does), is the sum of the winding numbers of all the other rings there:
-/// the signed crossings of the ray from it with their edges. One pass along every ring
+/// the signed crossings of the ray from it with their edges. Rings may meet at points or
+/// lie along each other (holes along their outer ring, walls between holes): no two
+/// cross, so each lies on one side of every other, the side of its test node, which lies
+/// on no other ring. (Where rings cross at a shared vertex, strict mode refuses the input
+/// after nesting, by `check_shared_positions`, whatever the depths; a ring with every
+/// node on other rings has no test node and goes to the grid, which decides rings lying
+/// wholly on others.) One pass along every ring
 /// counts them for every test node at once: with the test nodes sorted by height, a cursor
 /// follows the ring's height, and the nodes it passes over along an edge are those whose
 /// rays may cross the edge. False, deciding nothing, where that does not apply, or when
@@ -450,7 +456,7 @@ fn swept_depths(cx: &mut Context, s: &mut Scratch) -> bool {
     }
     // (a ring touching itself may wind twice round a point, or round none of its lobes
     // the way its rightmost vertex says)
-    if cx.lenient || !cx.crossings.is_empty() || !meet_at_points(cx, true) {
+    if cx.lenient || !cx.crossings.is_empty() || touches_itself(cx) {
         return false;
     }
     let pool = &cx.pool;
@@ -520,37 +526,42 @@ fn swept_depths(cx: &mut Context, s: &mut Scratch) -> bool {
     true
 }
 
+/// Whether some ring passes a position twice (touches itself there).
+fn touches_itself(cx: &Context) -> bool {
+    let pool = &cx.pool;
+    any_pair_at_a_position(cx, |n, m| pool.get(n).ring == pool.get(m).ring)
+}
+
 /// Whether the rings meet, if at all, only at isolated points: no two rings (nor two
 /// stretches of one) share an edge, lying along each other (`clean` split overlapping
 /// edges where they end, so such edges have both ends in common). Then two rings that do
 /// not cross at a shared point lie each on one side of the other, whether or not they
-/// touch themselves too. With `not_itself`, also false where a ring touches itself.
-fn meet_at_points(cx: &Context, not_itself: bool) -> bool {
+/// touch themselves too.
+fn meet_at_points(cx: &Context) -> bool {
     let pool = &cx.pool;
+    !any_pair_at_a_position(cx, |n, m| {
+        let ahead = pool.p(pool.next(n));
+        let along = [pool.next(m), pool.prev(m)].map(|e| pool.p(e));
+        // (and m's edge ahead along n's edge behind; n's ahead along m's behind is
+        // `along`)
+        along.contains(&ahead) || pool.p(pool.prev(n)) == pool.p(pool.next(m))
+    })
+}
+
+/// Whether `test` holds for two nodes at one shared position (each pair once).
+fn any_pair_at_a_position(cx: &Context, test: impl Fn(NodeId, NodeId) -> bool) -> bool {
     let mut i = 0;
     while i < cx.shared.len() {
         let j = cx.same_position_end(i);
         let group = &cx.shared[i..j];
         for (k, &n) in group.iter().enumerate() {
-            let ahead = pool.p(pool.next(n));
-            for &m in &group[k + 1..] {
-                if not_itself && pool.get(m).ring == pool.get(n).ring {
-                    return false;
-                }
-                let along = [pool.next(m), pool.prev(m)].map(|e| pool.p(e));
-                if along.contains(&ahead) {
-                    return false;
-                }
-                // and m's edge ahead along n's edge behind (n's ahead along m's behind
-                // is the `along` test)
-                if pool.p(pool.prev(n)) == pool.p(pool.next(m)) {
-                    return false;
-                }
+            if group[k + 1..].iter().any(|&m| test(n, m)) {
+                return true;
             }
         }
         i = j;
     }
-    true
+    false
 }
 
 /// The number of rings containing ring `b`, decided at its rightmost vertex — or, for the
@@ -1641,16 +1652,22 @@ mod tests {
     /// Holes lying along the outer ring and along each other (pairs of triangles sharing
     /// an edge, the first along its cell's lower side, which is the outer ring's in the
     /// first row), in any order, winding and quarter turn: the depths by construction,
-    /// whether the edges are few (only listed) or many (the grid).
+    /// counted by the sweep (every ring has a node on no other), or without it through
+    /// the edges, few (only listed) or many (the grid); and through the edges where a
+    /// ring lies on others at every node (a triangle of the first row or column, whose
+    /// first node lies on the outer ring, with its neighbour).
     #[test]
-    fn rings_lying_along_each_other_nest_listed_and_through_the_grid() {
+    fn rings_lying_along_each_other_nest_swept_listed_and_through_the_grid() {
         let mut pick = crate::testing::random(0x1157_ed00);
-        let (mut listed, mut grid) = (0, 0);
+        let (mut swept, mut listed, mut grid, mut on_others) = (0, 0, 0, 0);
         for case in 0..300 {
             let n = if case % 3 == 2 { 4 } else { 2 };
             let side = 10.0 * n as f64;
             let mut rings = vec![vec![[0.0, 0.0], [side, 0.0], [side, side], [0.0, side]]];
             let mut want = vec![0];
+            // a triangle of the first row or column with its neighbour has every node on
+            // other rings
+            let mut covered = false;
             for cell in 0..n * n {
                 let (x, y) = ((cell % n) as f64 * 10.0, (cell / n) as f64 * 10.0);
                 if pick(10) < 2 {
@@ -1659,23 +1676,38 @@ mod tests {
                 let (a, h) = (2.0 + pick(6) as f64, 2.0 + pick(6) as f64);
                 rings.push(vec![[x, y], [x + 8.0, y], [x + a, y + h]]);
                 want.push(1);
-                if pick(3) > 0 {
+                // (every other case keeps the first row and column free of such pairs)
+                let edge_cell = x == 0.0 || y == 0.0;
+                if pick(3) > 0 && (case % 2 == 1 || !edge_cell) {
                     rings.push(vec![[x + 8.0, y], [x + a, y + h], [x + 9.0, y + h]]);
                     want.push(1);
+                    covered |= edge_cell;
                 }
             }
             let (order, vertices, starts) = scrambled(&mut rings, &mut pick);
-            let (cx, _) = nested_as_built(&vertices, &starts, false, (&order, &want), case);
-            assert!(cx.edge_index.is_current(), "case {case}: the general rule");
-            if cx.edge_index.listed().is_some() {
-                listed += 1;
-            } else {
-                grid += 1;
+            for no_sweep in [false, true] {
+                let (cx, swept_now) =
+                    nested_as_built(&vertices, &starts, no_sweep, (&order, &want), case);
+                let through_edges = cx.edge_index.is_current();
+                if swept_now {
+                    swept += 1;
+                } else if cx.edge_index.listed().is_some() {
+                    listed += 1;
+                } else if through_edges {
+                    grid += 1;
+                }
+                // the edges decide exactly where a ring has every node on others (else
+                // the sweep, or where no two rings lie along each other and they are few,
+                // the direct count)
+                if !no_sweep {
+                    assert_eq!(through_edges, covered, "case {case}");
+                    on_others += usize::from(covered);
+                }
             }
         }
         assert!(
-            listed > 50 && grid > 50,
-            "{listed} listed, {grid} through the grid"
+            swept > 50 && listed > 50 && grid > 50 && on_others > 50,
+            "{swept} swept, {listed} listed, {grid} through the grid, {on_others} on others"
         );
     }
 

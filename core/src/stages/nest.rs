@@ -16,9 +16,10 @@
 //! side. The ray then stops at that edge, a cell or two away. And a few small rings that
 //! meet nowhere (a glyph), or only at points (a hole touching its polygon's corner), skip
 //! the grid: each one's depth is counted directly, from the others' winding numbers
-//! around one of its vertices that lies on no other ring. More such rings, none touching
-//! itself, are counted in one pass along them all (`swept_depths`): with those vertices
-//! sorted by height, each edge meets the ones whose height it spans.
+//! around one of its vertices that lies on no other ring. More rings, none touching
+//! itself, each with such a vertex (they may also lie along each other: holes along their
+//! polygon's edge), are counted in one pass along them all (`swept_depths`): with those
+//! vertices sorted by height, each edge meets the ones whose height it spans.
 //!
 //! `Nesting::FirstIsOuter` (earcut's convention) takes ring 0 as the outer boundary and the
 //! rest as its holes; strict mode checks that this is true.

@@ -80,7 +80,10 @@ request (--polytri): even-odd and seidel-even-odd read all of a file's rings at 
 the even-odd fill rule (crossing edges split at exactly rounded points), with the fast \
 ear clipper or Seidel's trapezoidation, as lyon and i-triangle read them; even-odd-each \
 takes a file's polygons one at a time by the same rule, as polytri-fast takes them; seidel is \
-Seidel's trapezoidation in strict mode. The last \
+Seidel's trapezoidation in strict mode; check-floor is a reference, not polytri's code: the \
+least an exact input check costs (every vertex read, one exact orientation per edge: the \
+star-shaped certificate from each ring's vertex mean, counted as done whether or not it \
+holds), to set beside polytri-check. The last \
 row is the geometric mean of the ratios. Files with several polygons go to earcut and \
 polytri one polygon at a time, to the others all at once.
 
@@ -118,8 +121,8 @@ pub struct Args {
     pub peers: Option<Vec<Peer>>,
 
     /// polytri configurations, comma-separated: fast, lenient, quality, check, threads,
-    /// even-odd, even-odd-each, seidel, seidel-even-odd [default: the first five;
-    /// --scaling: the first four]
+    /// even-odd, even-odd-each, seidel, seidel-even-odd, and the reference check-floor
+    /// [default: the first five; --scaling: the first four]
     #[arg(long, value_delimiter = ',', value_name = "CONFIGS",
           value_parser = parse_polytri)]
     pub polytri: Option<Vec<Implementation>>,
@@ -197,7 +200,7 @@ fn parse_polytri(s: &str) -> Result<Implementation, String> {
         .into_iter()
         .find(|imp| imp.name().eq_ignore_ascii_case(&full))
         .ok_or_else(|| {
-            format!("unknown polytri configuration '{s}' (known: fast, lenient, quality, check, threads, even-odd, even-odd-each, seidel, seidel-even-odd)")
+            format!("unknown polytri configuration '{s}' (known: fast, lenient, quality, check, threads, even-odd, even-odd-each, seidel, seidel-even-odd, check-floor)")
         })
 }
 

@@ -116,22 +116,33 @@ fn json_lists_chosen_peers() {
 }
 
 #[test]
-fn check_column_times_the_check_alone_and_is_no_peer() {
-    let text = bench(&["--json", "--polytri", "check,fast", "--peers", "earcut"]);
+fn check_columns_time_the_check_alone_and_are_no_peers() {
+    let args = [
+        "--json",
+        "--polytri",
+        "check,fast,check-floor",
+        "--peers",
+        "earcut",
+    ];
+    let text = bench(&args);
     let json: Value = serde_json::from_str(&text).expect("JSON on stdout");
     let timings = &json["rows"][0]["timings"];
     assert_eq!(timings[0]["implementation"], "polytri-check");
     assert_eq!(timings[1]["implementation"], "polytri-fast");
-    // the check ran, but made no triangles; the row's count is polytri-fast's
-    assert!(timings[0]["median_ms"].is_number(), "{timings}");
-    assert!(timings[0]["triangles"].is_null(), "{timings}");
+    assert_eq!(timings[2]["implementation"], "polytri-check-floor");
+    // the check and its floor ran, but made no triangles; the row's count is
+    // polytri-fast's
+    for k in [0, 2] {
+        assert!(timings[k]["median_ms"].is_number(), "{timings}");
+        assert!(timings[k]["triangles"].is_null(), "{timings}");
+    }
     assert!(
         timings[1]["triangles"].as_u64().is_some_and(|t| t > 10),
         "{timings}"
     );
     assert_eq!(json["rows"][0]["triangles"], timings[1]["triangles"]);
     // however fast the check is, the ratios are to the only peer
-    assert_eq!(timings[2]["ratio"].as_f64(), Some(1.0), "{timings}");
+    assert_eq!(timings[3]["ratio"].as_f64(), Some(1.0), "{timings}");
 }
 
 #[test]

@@ -42,6 +42,7 @@ use crate::input::Input;
 
 mod earcut;
 mod earcut_exact;
+mod floor;
 pub(crate) mod group;
 mod i_triangle;
 mod lyon;

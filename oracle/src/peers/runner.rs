@@ -9,6 +9,7 @@ use lyon_tessellation::path::Path;
 use lyon_tessellation::{BuffersBuilder, FillTessellator, FillVertex, VertexBuffers};
 
 use super::earcut_exact::{exact, vendored};
+use super::floor::Floor;
 use super::group::{polygons, Polygon};
 use super::spade::Constraints;
 use super::{check_finite, panic_message, Peer};
@@ -50,6 +51,12 @@ pub enum Implementation {
     /// [`PolytriEvenOdd`](Self::PolytriEvenOdd) with [`polytri::Strategy::Seidel`]: the
     /// resolved region trapezoidated. Not in the default set: `--polytri seidel-even-odd`.
     PolytriSeidelEvenOdd,
+    /// A reference beside [`PolytriCheck`](Self::PolytriCheck), not polytri's code: the
+    /// least an exact input check costs — every vertex read and one exact orientation per
+    /// edge, the star-shaped certificate from each ring's vertex mean, counted as done
+    /// whether or not it holds (`oracle/src/peers/floor.rs`). Makes no triangles. Not in
+    /// the default set: `--polytri check-floor`.
+    PolytriCheckFloor,
     /// Another triangulator.
     Peer(Peer),
 }
@@ -65,7 +72,7 @@ impl Implementation {
     ];
 
     /// Every polytri configuration: the default ones, then the optional ones.
-    pub const POLYTRI_ALL: [Implementation; 9] = [
+    pub const POLYTRI_ALL: [Implementation; 10] = [
         Implementation::PolytriFast,
         Implementation::PolytriLenient,
         Implementation::PolytriQuality,
@@ -75,6 +82,7 @@ impl Implementation {
         Implementation::PolytriEvenOddEach,
         Implementation::PolytriSeidel,
         Implementation::PolytriSeidelEvenOdd,
+        Implementation::PolytriCheckFloor,
     ];
 
     /// Every default polytri configuration, then every peer, then the references.
@@ -96,9 +104,13 @@ impl Implementation {
         matches!(self, Implementation::Peer(peer) if !peer.is_reference())
     }
 
-    /// Whether this makes triangles: all but [`PolytriCheck`](Self::PolytriCheck).
+    /// Whether this makes triangles: all but [`PolytriCheck`](Self::PolytriCheck) and
+    /// [`PolytriCheckFloor`](Self::PolytriCheckFloor).
     pub const fn triangulates(self) -> bool {
-        !matches!(self, Implementation::PolytriCheck)
+        !matches!(
+            self,
+            Implementation::PolytriCheck | Implementation::PolytriCheckFloor
+        )
     }
 
     /// The kebab-case name, as [`Display`](fmt::Display) writes and [`FromStr`] reads it.
@@ -113,6 +125,7 @@ impl Implementation {
             Implementation::PolytriEvenOddEach => "polytri-even-odd-each",
             Implementation::PolytriSeidel => "polytri-seidel",
             Implementation::PolytriSeidelEvenOdd => "polytri-seidel-even-odd",
+            Implementation::PolytriCheckFloor => "polytri-check-floor",
             Implementation::Peer(peer) => peer.name(),
         }
     }
@@ -199,6 +212,7 @@ pub struct Runner {
     earcut_exact: exact::Earcut,
     earcut_vendored: vendored::Earcut,
     earcut_out: Vec<u32>,
+    floor: Floor,
     i_triangle: i_triangle::float::triangulator::Triangulator<u32, i32>,
     i_triangle_out: Triangulation<[f64; 2], u32>,
     lyon: FillTessellator,
@@ -228,6 +242,7 @@ impl Runner {
             earcut_exact: exact::Earcut::new(),
             earcut_vendored: vendored::Earcut::new(),
             earcut_out: Vec::new(),
+            floor: Floor::default(),
             i_triangle: super::i_triangle::triangulator(64),
             i_triangle_out: Triangulation::with_capacity(64),
             lyon: FillTessellator::new(),
@@ -266,6 +281,7 @@ impl Runner {
                 polytri::Options::new().with_strategy(polytri::Strategy::Quality),
             ),
             Implementation::PolytriCheck => self.polytri_check(prepared),
+            Implementation::PolytriCheckFloor => self.check_floor(prepared),
             Implementation::PolytriThreads => self.polytri_threads(prepared),
             Implementation::PolytriSeidel => self.polytri(
                 prepared,
@@ -354,6 +370,17 @@ impl Runner {
             self.polytri
                 .check(vertices, ring_starts, nesting)
                 .map(|()| 0)
+        })
+    }
+
+    /// The check's floor ([`Implementation::PolytriCheckFloor`]) on the same calls as
+    /// [`Runner::polytri_check`].
+    fn check_floor(&mut self, prepared: &Prepared) -> Result<usize, String> {
+        polytri_calls(prepared, |vertices, ring_starts, _| {
+            // (the count of certified rings is opaque to the optimiser, so that the
+            // certificate is computed)
+            core::hint::black_box(self.floor.run(vertices, ring_starts));
+            Ok(0)
         })
     }
 

@@ -16,10 +16,11 @@
 //! side. The ray then stops at that edge, a cell or two away. And a few small rings that
 //! meet nowhere (a glyph), or only at points (a hole touching its polygon's corner), skip
 //! the grid: each one's depth is counted directly, from the others' winding numbers
-//! around one of its vertices that lies on no other ring. More rings, none touching
-//! itself, each with such a vertex (they may also lie along each other: holes along their
-//! polygon's edge), are counted in one pass along them all (`swept_depths`): with those
-//! vertices sorted by height, each edge meets the ones whose height it spans.
+//! around one of its vertices that lies on no other ring. More rings, each with such a
+//! vertex (they may also lie along each other, holes along their polygon's edge, or touch
+//! themselves where each winds once round the others' vertices), are counted in one pass
+//! along them all (`swept_depths`): with those vertices sorted by height, each edge meets
+//! the ones whose height it spans.
 //!
 //! `Nesting::FirstIsOuter` (earcut's convention) takes ring 0 as the outer boundary and the
 //! rest as its holes; strict mode checks that this is true.
@@ -61,6 +62,10 @@ pub(crate) struct Scratch {
     /// [`swept_depths`]: each ring's test point (y, x, ring) by y, and each ring's sum.
     probes: Vec<(f64, f64, u32)>,
     sums: Vec<i64>,
+    /// [`swept_depths`] where a ring touches itself: the winding of the ring being walked
+    /// round each ring's test point, and the rings whose winding it changed.
+    ring_sums: Vec<i64>,
+    wound: Vec<u32>,
     /// Tests: never count depths by [`swept_depths`] (to exercise the grid), and whether
     /// it counted them last.
     #[cfg(test)]
@@ -430,9 +435,11 @@ fn test_node(cx: &Context, first: NodeId) -> Option<NodeId> {
     }
 }
 
-/// [`direct_depths`] for more rings and edges, in strict mode where no ring touches
-/// itself: then every ring is a simple closed curve turning counter-clockwise (as `clean`
-/// left it), whose winding number round a point on no ring is 1 inside and 0 outside. So
+/// [`direct_depths`] for more rings and edges, in strict mode: every ring turns
+/// counter-clockwise (as `clean` left it), and one that does not touch itself is a simple
+/// closed curve, whose winding number round a point on no ring is 1 inside and 0 outside;
+/// one that touches itself is the same where its input is valid (its lobes turn one way
+/// and it winds once), which its winding round every test node, 0 or 1, must confirm. So
 /// the depth of ring b, the number of rings round its test node (chosen as
 /// [`direct_depths`] does), is the sum of the winding numbers of all the other rings there:
 /// the signed crossings of the ray from it with their edges. Rings may meet at points or
@@ -441,12 +448,13 @@ fn test_node(cx: &Context, first: NodeId) -> Option<NodeId> {
 /// on no other ring. (Where rings cross at a shared vertex, strict mode refuses the input
 /// after nesting, by `check_shared_positions`, whatever the depths; a ring with every
 /// node on other rings has no test node and goes to the grid, which decides rings lying
-/// wholly on others.) One pass along every ring
-/// counts them for every test node at once: with the test nodes sorted by height, a cursor
-/// follows the ring's height, and the nodes it passes over along an edge are those whose
-/// rays may cross the edge. False, deciding nothing, where that does not apply, or when
-/// the edges pass over more test nodes than a few per edge and a hundred per ring (tall
-/// edges over many rings: the grid's rays cost less).
+/// wholly on others.)
+///
+/// One pass along every ring counts them for every test node at once: with the test
+/// nodes sorted by height, a cursor follows the ring's height, and the nodes it passes
+/// over along an edge are those whose rays may cross the edge. False, deciding nothing,
+/// where that does not apply, or when the edges pass over more test nodes than a few per
+/// edge and a hundred per ring (tall edges over many rings: the grid's rays cost less).
 fn swept_depths(cx: &mut Context, s: &mut Scratch) -> bool {
     #[cfg(test)]
     {
@@ -455,11 +463,13 @@ fn swept_depths(cx: &mut Context, s: &mut Scratch) -> bool {
             return false;
         }
     }
-    // (a ring touching itself may wind twice round a point, or round none of its lobes
-    // the way its rightmost vertex says)
-    if cx.lenient || !cx.crossings.is_empty() || touches_itself(cx) {
+    if cx.lenient || !cx.crossings.is_empty() {
         return false;
     }
+    // A ring touching itself may wind twice round a point, or its lobe may wind against
+    // the way its rightmost vertex says: each ring's winding round each test node is then
+    // kept apart, and any but 0 or 1 leaves the depths to the grid.
+    let apart = touches_itself(cx);
     let pool = &cx.pool;
     s.probes.clear();
     let mut edges = 0;
@@ -475,6 +485,9 @@ fn swept_depths(cx: &mut Context, s: &mut Scratch) -> bool {
         .sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.2.cmp(&b.2)));
     s.sums.clear();
     s.sums.resize(cx.rings.len(), 0);
+    s.ring_sums.clear();
+    s.ring_sums.resize(cx.rings.len(), 0);
+    s.wound.clear();
     let probes = &s.probes;
     // (a grid ray costs a few thousand instructions, a test node passed over a dozen)
     let mut budget = 4 * edges + 128 * probes.len() + 64;
@@ -507,12 +520,29 @@ fn swept_depths(cx: &mut Context, s: &mut Scratch) -> bool {
                     continue;
                 }
                 let turn = orient2d(a, b, Point::new(x, y));
-                if up && turn == Orientation::CounterClockwise {
-                    s.sums[r as usize] += 1;
-                } else if !up && turn == Orientation::Clockwise {
-                    s.sums[r as usize] -= 1;
+                let step = match turn {
+                    Orientation::CounterClockwise if up => 1,
+                    Orientation::Clockwise if !up => -1,
+                    _ => continue,
+                };
+                let r = r as usize;
+                if !apart {
+                    s.sums[r] += step;
+                } else {
+                    if s.ring_sums[r] == 0 {
+                        s.wound.push(r as u32);
+                    }
+                    s.ring_sums[r] += step;
                 }
             }
+        }
+        // (a ring listed twice counts once: its sum is 0 the second time)
+        for r in s.wound.drain(..) {
+            let w = core::mem::take(&mut s.ring_sums[r as usize]);
+            if !(0..=1).contains(&w) {
+                return false;
+            }
+            s.sums[r as usize] += w;
         }
     }
     for (b, ring) in cx.rings.iter_mut().enumerate() {
@@ -1710,6 +1740,66 @@ mod tests {
             swept > 50 && listed > 50 && grid > 50 && on_others > 50,
             "{swept} swept, {listed} listed, {grid} through the grid, {on_others} on others"
         );
+    }
+
+    /// Outer rings pinched into two square lobes touching at a corner (figure eights, a
+    /// ring touching itself), several in a row (past the direct count), each with a hole
+    /// in its first lobe and maybe one in its second: counted by the sweep (or, few,
+    /// directly), the depths by construction, in any order, winding and quarter turn.
+    /// And with the second lobe turned against the first (a ring crossing itself at the
+    /// pinch, around one hole), the sweep leaves the depths to the grid and nesting fails
+    /// or passes as without it.
+    #[test]
+    fn rings_touching_themselves_nest_by_the_sweep_where_they_wind_once() {
+        let mut pick = crate::testing::random(0x8ea7_0001);
+        let (mut swept, mut left) = (0, 0);
+        for case in 0..200 {
+            let twisted = case % 4 == 3;
+            let mut rings = Vec::new();
+            let mut want = Vec::new();
+            for k in 0..4 + pick(4) {
+                let x = 30.0 * k as f64;
+                let first = [[x, 0.0], [x + 10.0, 0.0], [x + 10.0, 10.0], [x, 10.0]];
+                // the second lobe from the pinch at (x + 10, 10), one way or the other
+                let mut second = vec![[x + 20.0, 10.0], [x + 20.0, 20.0], [x + 10.0, 20.0]];
+                if twisted && k == 0 {
+                    second.reverse();
+                }
+                let mut eight = first[..3].to_vec();
+                eight.extend(second);
+                eight.push([x + 10.0, 10.0]);
+                eight.push([x, 10.0]);
+                rings.push(eight);
+                want.push(0);
+                rings.push(square(x + 2.0, 2.0, 3.0 + pick(4) as f64, true));
+                want.push(1);
+                if pick(2) == 0 || (twisted && k == 0) {
+                    rings.push(square(x + 12.0, 12.0, 3.0 + pick(4) as f64, false));
+                    want.push(1);
+                }
+            }
+            let (order, vertices, starts) = scrambled(&mut rings, &mut pick);
+            if !twisted {
+                let (cx, swept_now) =
+                    nested_as_built(&vertices, &starts, false, (&order, &want), case);
+                // (few rings are counted directly)
+                assert!(!cx.edge_index.is_current(), "case {case}: not by the grid");
+                swept += usize::from(swept_now);
+                continue;
+            }
+            let run = |no_sweep: bool| {
+                let (mut cx, mut st) = cleaned(&vertices, &starts, false);
+                st.nest.no_sweep = no_sweep;
+                let result = nest(&mut cx, &mut st.nest, Nesting::Auto);
+                let depths: Vec<u32> = cx.rings.iter().map(|r| r.depth).collect();
+                (result.map(|()| depths), st.nest.swept)
+            };
+            let ((with, swept_now), (without, _)) = (run(false), run(true));
+            assert!(!swept_now, "case {case}: a lobe winds against its ring");
+            assert_eq!(with, without, "case {case}");
+            left += 1;
+        }
+        assert!(swept > 50 && left > 30, "{swept} swept, {left} left");
     }
 
     #[test]

@@ -42,8 +42,8 @@
 //! only ring in strict mode, dropped whole as `clean` drops it), two edges crossing, more
 //! than eight nodes at one position, a ring touching itself at its rightmost vertex or
 //! (lenient mode) anywhere, touching rings joined in a way `touch` decides by another
-//! rule, a ring with every vertex on others whose vertices disagree on its nesting, rings nested
-//! otherwise, a bridge target the pipeline would choose by a fallback, a clockwise last
+//! rule, a ring with every vertex on others whose vertices disagree on its nesting, rings
+//! nested otherwise, a bridge target the pipeline would choose by a fallback, a clockwise last
 //! triangle or a ring the walk cannot finish. The triangulator then runs the pipeline
 //! from the start, which finds and reports the same things as without this stage.
 //! `core/tests/small.rs` holds the two to the same output.

@@ -485,12 +485,47 @@ fn swept_depths(cx: &mut Context, s: &mut Scratch) -> bool {
         .sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.2.cmp(&b.2)));
     s.sums.clear();
     s.sums.resize(cx.rings.len(), 0);
-    s.ring_sums.clear();
-    s.ring_sums.resize(cx.rings.len(), 0);
-    s.wound.clear();
-    let probes = &s.probes;
+    if apart {
+        s.ring_sums.clear();
+        s.ring_sums.resize(cx.rings.len(), 0);
+        s.wound.clear();
+    }
     // (a grid ray costs a few thousand instructions, a test node passed over a dozen)
-    let mut budget = 4 * edges + 128 * probes.len() + 64;
+    let budget = 4 * edges + 128 * s.probes.len() + 64;
+    // (two copies of the walk: keeping windings apart costs the others nothing)
+    let counted = if apart {
+        count_windings::<true>(cx, s, budget)
+    } else {
+        count_windings::<false>(cx, s, budget)
+    };
+    if !counted {
+        return false;
+    }
+    for (b, ring) in cx.rings.iter_mut().enumerate() {
+        if ring.alive {
+            ring.depth = s.sums[b].unsigned_abs() as u32;
+        }
+    }
+    #[cfg(test)]
+    {
+        s.swept = true;
+    }
+    true
+}
+
+/// [`swept_depths`]'s pass along every ring: each test node's sum of the windings of the
+/// other rings round it (`s.sums`), with `APART` each ring's winding round each node
+/// first summed on its own and required to be 0 or 1. False where that fails, or the
+/// edges pass over more than `budget` test nodes.
+fn count_windings<const APART: bool>(cx: &Context, s: &mut Scratch, mut budget: usize) -> bool {
+    let pool = &cx.pool;
+    let Scratch {
+        probes,
+        sums,
+        ring_sums,
+        wound,
+        ..
+    } = s;
     for (q, ring) in cx.rings.iter().enumerate().filter(|(_, r)| r.alive) {
         // the cursor: the test nodes below the current vertex's height
         let mut at = probes.partition_point(|t| t.0 < pool.p(ring.start).y);
@@ -519,40 +554,30 @@ fn swept_depths(cx: &mut Context, s: &mut Scratch) -> bool {
                 if x > right || r as usize == q {
                     continue;
                 }
-                let turn = orient2d(a, b, Point::new(x, y));
-                let step = match turn {
+                let step = match orient2d(a, b, Point::new(x, y)) {
                     Orientation::CounterClockwise if up => 1,
                     Orientation::Clockwise if !up => -1,
                     _ => continue,
                 };
                 let r = r as usize;
-                if !apart {
-                    s.sums[r] += step;
+                if !APART {
+                    sums[r] += step;
                 } else {
-                    if s.ring_sums[r] == 0 {
-                        s.wound.push(r as u32);
+                    if ring_sums[r] == 0 {
+                        wound.push(r as u32);
                     }
-                    s.ring_sums[r] += step;
+                    ring_sums[r] += step;
                 }
             }
         }
         // (a ring listed twice counts once: its sum is 0 the second time)
-        for r in s.wound.drain(..) {
-            let w = core::mem::take(&mut s.ring_sums[r as usize]);
+        for r in wound.drain(..) {
+            let w = core::mem::take(&mut ring_sums[r as usize]);
             if !(0..=1).contains(&w) {
                 return false;
             }
-            s.sums[r as usize] += w;
+            sums[r as usize] += w;
         }
-    }
-    for (b, ring) in cx.rings.iter_mut().enumerate() {
-        if ring.alive {
-            ring.depth = s.sums[b].unsigned_abs() as u32;
-        }
-    }
-    #[cfg(test)]
-    {
-        s.swept = true;
     }
     true
 }

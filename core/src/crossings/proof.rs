@@ -338,7 +338,10 @@ fn crossings(
             return false;
         }
         let (a, b, c, d) = (pool.p(e.from), pool.p(e.to), pool.p(f.from), pool.p(f.to));
-        if crate::geom::crosses(a, b, c, d) {
+        // (an edge of no length, a repeated vertex as loaded, crosses nothing properly:
+        // rings of one repeated point would otherwise have every pair of their edges
+        // decided by exact arithmetic)
+        if a != b && c != d && crate::geom::crosses(a, b, c, d) {
             out.push(e.from);
             out.push(f.from);
             return first_only;

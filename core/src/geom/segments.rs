@@ -12,9 +12,19 @@ pub(crate) fn crosses(a: Point, b: Point, c: Point, d: Point) -> bool {
     if boxes_apart(a, b, c, d) {
         return false;
     }
-    let (o1, o2) = (orient2d(a, b, c), orient2d(a, b, d));
-    let (o3, o4) = (orient2d(c, d, a), orient2d(c, d, b));
-    o1 != Collinear && o2 != Collinear && o1 != o2 && o3 != Collinear && o4 != Collinear && o3 != o4
+    // (each sign only where the ones before leave the answer open: most pairs whose
+    // boxes overlap have both ends of one edge on one side of the other)
+    let o1 = orient2d(a, b, c);
+    o1 != Collinear && {
+        let o2 = orient2d(a, b, d);
+        o2 != Collinear && o1 != o2 && {
+            let o3 = orient2d(c, d, a);
+            o3 != Collinear && {
+                let o4 = orient2d(c, d, b);
+                o4 != Collinear && o3 != o4
+            }
+        }
+    }
 }
 
 /// Whether the bounding boxes of segments a–b and c–d are disjoint (comparisons only,

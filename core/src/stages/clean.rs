@@ -266,11 +266,16 @@ fn few_lost_edges(cx: &Context, s: &mut Scratch) -> bool {
     let removed = |i: u32| pool.get(NodeId(i)).removed;
     for &ring in &cx.as_loaded {
         let next = |i: u32| ring.next(i);
+        // (an edge of no length crosses nothing properly: a ring of one repeated point
+        // loses none that matters)
+        let lengthy = |i: u32| pool.p(NodeId(i)) != pool.p(NodeId(next(i)));
         let Some(start) = ring.nodes().find(|&i| !removed(i)) else {
-            if s.flagged.len() + ring.len as usize > LOST_MAX {
-                return false;
+            for e in ring.nodes().filter(|&i| lengthy(i)) {
+                if s.flagged.len() == LOST_MAX {
+                    return false;
+                }
+                s.flagged.push(NodeId(e));
             }
-            s.flagged.extend(ring.nodes().map(NodeId));
             continue;
         };
         // from kept node to kept node, round the ring once
@@ -288,10 +293,12 @@ fn few_lost_edges(cx: &Context, s: &mut Scratch) -> bool {
             if d != v {
                 let mut e = u;
                 while e != v {
-                    if s.flagged.len() == LOST_MAX {
-                        return false;
+                    if lengthy(e) {
+                        if s.flagged.len() == LOST_MAX {
+                            return false;
+                        }
+                        s.flagged.push(NodeId(e));
                     }
-                    s.flagged.push(NodeId(e));
                     e = next(e);
                 }
             }

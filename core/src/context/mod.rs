@@ -75,6 +75,10 @@ pub(crate) struct Context {
     pub repairs: Vec<Repair>,
     /// Lenient mode: repair instead of refusing.
     pub lenient: bool,
+    /// Strict mode, for a caller that only asks whether the input passes (a fill rule's
+    /// first try): `clean` refuses at the first crossing its proof meets, whichever it
+    /// is, without the sweep that finds the one strict mode names. Cleared by `reset`.
+    pub probe: bool,
     /// `clean` keeps straight vertices: a first try dropped one where edges then crossed.
     /// Set for the rest of the call (every lenient rerun included).
     pub keep_collinear: bool,
@@ -110,6 +114,7 @@ impl Context {
         self.dropped.clear();
         self.repairs.clear();
         self.lenient = lenient;
+        self.probe = false;
         self.split_lobes = false;
         self.rings_doubled = false;
         self.edge_index.invalidate();

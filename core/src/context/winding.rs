@@ -18,7 +18,7 @@ pub(crate) struct NetEdge {
 /// Whether the ring through `start` winds counter-clockwise, read on its net boundary: its
 /// edges with every segment walked both ways cancelled (walls, spikes and cracks enclose
 /// nothing), at the rightmost-lowest position the rest reaches, by the outermost direction
-/// there that more edges arrive along than leave, or fewer (see [`outermost_edge_arrives`]).
+/// there that more edges arrive along than leave, or fewer (see `clean::outermost_edge_arrives`).
 /// `None` when nothing is left (the ring encloses nothing). For rings whose extreme
 /// position lies on walls only, where the turns there say nothing. Exact.
 pub(crate) fn net_boundary_counter_clockwise(

@@ -119,6 +119,8 @@ pub(crate) enum Contact {
     AtVertices,
     /// Not proved: some edges cross or overlap, or the budget ran out.
     NotProved,
+    /// The edges starting at these two nodes cross properly (found within the budget).
+    Crossed(NodeId, NodeId),
 }
 
 /// Whether the edges of the rings through `starts` are proved to meet nowhere but at
@@ -128,8 +130,9 @@ pub(crate) enum Contact {
 /// position held by more than one node, sorted by position (then id), and `touches` every
 /// node lying inside an edge, once per (edge, node), sorted — what the sweep of
 /// `super::sweep` finds there, so that `clean` goes on as after the sweep.
-/// [`Contact::NotProved`] when some pair crosses, or the budget ran out. `nodes` is
-/// filled with the rings' nodes either way.
+/// [`Contact::Crossed`] when a pair found crosses properly; [`Contact::NotProved`] when
+/// some pair meets otherwise than at vertices, or the budget ran out. `nodes` is filled
+/// with the rings' nodes either way.
 ///
 /// `turns_proper` says that no node's turn is collinear (as `clean`'s filter leaves every
 /// ring): then adjacent edges meet only at their shared vertex, and no pair of them needs
@@ -161,19 +164,20 @@ pub(crate) fn edges_meet_at_vertices(
     // pairs of overlapping boxes decided by signs: past a few per edge (many rings lying
     // along each other), the sweep does it for less
     let mut contacts = CONTACTS_PER_EDGE * scratch.boxes.len() + 64;
+    let mut crossed = None;
     let scan = scan(pool, scratch, BUDGET_PER_EDGE, |e, f| {
         if contacts == 0 {
             return true;
         }
         contacts -= 1;
-        contact(pool, e, f, turns_proper, touches, &mut nodes)
+        contact(pool, e, f, turns_proper, touches, &mut nodes, &mut crossed)
     });
     for &n in shared.iter() {
         listed[n.0 as usize] = false;
     }
     scratch.listed = listed;
     if scan != Scan::Done {
-        return Contact::NotProved;
+        return crossed.map_or(Contact::NotProved, |(a, b)| Contact::Crossed(a, b));
     }
     if touches.is_empty() && shared.is_empty() {
         return Contact::Apart;
@@ -186,8 +190,9 @@ pub(crate) fn edges_meet_at_vertices(
 }
 
 /// The visitor of [`edges_meet_at_vertices`]: whether edges `e` and `f`, whose boxes
-/// overlap, meet other than at vertices (stop: not proved). Where they meet at a vertex,
-/// records the nodes there (`shared`) or the vertex inside the other edge (`touches`).
+/// overlap, meet other than at vertices (stop: not proved; `crossed` names them where
+/// they cross properly). Where they meet at a vertex, records the nodes there (`shared`)
+/// or the vertex inside the other edge (`touches`).
 fn contact(
     pool: &Pool,
     e: &EdgeBox,
@@ -195,6 +200,7 @@ fn contact(
     turns_proper: bool,
     touches: &mut Vec<Touch>,
     shared: &mut Shared,
+    crossed: &mut Option<(NodeId, NodeId)>,
 ) -> bool {
     use Orientation::Collinear;
     if e.to == f.from || f.to == e.from {
@@ -256,7 +262,10 @@ fn contact(
         (_, Collinear, _, _) => d,
         (_, _, Collinear, _) => a,
         (_, _, _, Collinear) => b,
-        _ => return true,
+        _ => {
+            *crossed = Some((e.from, f.from));
+            return true;
+        }
     };
     if !(within_box(a, b, x) && within_box(c, d, x)) {
         return false; // x lies on one edge's line outside that edge: they do not meet
@@ -1122,6 +1131,13 @@ mod tests {
         let case = format!("{rings:?}");
         match contact {
             Contact::NotProved => {}
+            Contact::Crossed(a, b) => {
+                // a pair that does cross, where the sweep finds crossings too
+                let edge = |n: NodeId| (pool.p(n), pool.p(pool.next(n)));
+                let ((p, q), (r, t)) = (edge(a), edge(b));
+                assert!(crate::geom::crosses(p, q, r, t), "{case}");
+                assert!(!crossings.is_empty(), "{case}");
+            }
             Contact::Apart => {
                 assert!(crossings.is_empty() && swept.is_empty(), "{case}");
                 assert!(groups.is_empty(), "{case}");
@@ -1133,7 +1149,10 @@ mod tests {
             }
         }
         if !crossings.is_empty() {
-            assert_eq!(contact, Contact::NotProved, "{case}");
+            assert!(
+                matches!(contact, Contact::NotProved | Contact::Crossed(..)),
+                "{case}"
+            );
         }
         contact
     }
@@ -1141,11 +1160,12 @@ mod tests {
     /// Random rings on a 6 × 6 grid (shared vertices, T-junctions, collinear overlaps
     /// and crossings everywhere), with and without collinear turns: wherever the proof
     /// says the edges meet only at vertices, it lists what the sweep finds; where the
-    /// sweep finds a crossing, it proves nothing.
+    /// sweep finds a crossing, it proves nothing, and a pair it names as crossed does
+    /// cross.
     #[test]
     fn contacts_at_vertices_are_what_the_sweep_finds() {
         let mut next = xorshift(0x5eed_cafe_f00d_d00d);
-        let (mut apart, mut at_vertices, mut not_proved) = (0, 0, 0);
+        let (mut apart, mut at_vertices, mut not_proved, mut crossed) = (0, 0, 0, 0);
         for _ in 0..40_000 {
             let mut rings: Vec<Vec<(f64, f64)>> = Vec::new();
             for _ in 0..1 + next() % 3 {
@@ -1167,10 +1187,13 @@ mod tests {
                 Contact::NotProved => not_proved += 1,
                 Contact::Apart => apart += 1,
                 Contact::AtVertices => at_vertices += 1,
+                Contact::Crossed(..) => crossed += 1,
             }
         }
-        eprintln!("{apart} apart, {at_vertices} at vertices, {not_proved} not proved");
-        assert!(apart > 500 && at_vertices > 500 && not_proved > 500);
+        eprintln!(
+            "{apart} apart, {at_vertices} at vertices, {crossed} crossed, {not_proved} not proved"
+        );
+        assert!(apart > 500 && at_vertices > 500 && crossed > 500 && not_proved > 500);
     }
 
     #[test]

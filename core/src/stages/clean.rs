@@ -452,7 +452,10 @@ fn sweep(
                 order.extend_from_slice(shared);
                 return Ok(Some(false));
             }
-            Contact::NotProved => {}
+            // (a caller that only asks whether the input passes stops here; others
+            // sweep, for the crossing strict mode names and lenient mode's repairs)
+            Contact::Crossed(a, b) if cx.probe => return Err(edges_cross(cx, a, b)),
+            Contact::NotProved | Contact::Crossed(..) => {}
         }
     }
     sweep::sweep(

@@ -78,6 +78,7 @@ pub(crate) fn triangulate<T: Coord>(
             // crossings, which costs more where many long edges share the cells of its
             // grid
             cx.reset(false);
+            cx.probe = true;
             load::load(cx, vertices, ring_starts)?;
             clean::clean(cx, &mut st.clean, false).is_ok()
         }
@@ -293,6 +294,8 @@ fn strict_first<T: Coord>(
     cx.keep_collinear = false;
     cx.keep_lobes = false;
     cx.reset(false);
+    // (a crossing means `resolve`, whichever pair it is)
+    cx.probe = true;
     match pipeline::load_and_clean(cx, st, vertices, ring_starts, false) {
         Ok(_) => {}
         Err(Error::EdgesCross { .. }) => return Strict::Crossed,

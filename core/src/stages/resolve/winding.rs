@@ -33,6 +33,8 @@ pub(crate) struct Scratch {
     above: Vec<i64>,
     /// The vertices in sweep order.
     order: Vec<u32>,
+    /// The vertices after the sorted run `hot` starts with, sorted.
+    tail: Vec<u32>,
     /// Edges by their smaller end, in compressed rows.
     first: Vec<u32>,
     starting: Vec<u32>,
@@ -46,6 +48,34 @@ fn lex(a: [f64; 2], b: [f64; 2]) -> Ordering {
     a[0].partial_cmp(&b[0])
         .unwrap_or(Ordering::Equal)
         .then(a[1].partial_cmp(&b[1]).unwrap_or(Ordering::Equal))
+}
+
+/// The points of `hot` (distinct) in lexicographic order, into `s.order`. `resolve` lists
+/// the input's positions sorted, then the added crossings: only the run after the sorted
+/// one is sorted, and merged with it.
+fn sweep_order(s: &mut Scratch, hot: &[[f64; 2]]) {
+    let n = hot.len();
+    let less = |a: u32, b: u32| lex(hot[a as usize], hot[b as usize]) == Ordering::Less;
+    let run = 1 + (1..n as u32).take_while(|&i| less(i - 1, i)).count();
+    s.tail.clear();
+    s.tail.extend(run.min(n) as u32..n as u32);
+    s.tail
+        .sort_unstable_by(|&a, &b| lex(hot[a as usize], hot[b as usize]));
+    s.order.clear();
+    let (mut i, mut tail) = (0, s.tail.iter().copied().peekable());
+    while i < run.min(n) as u32 {
+        match tail.peek() {
+            Some(&t) if less(t, i) => {
+                s.order.push(t);
+                tail.next();
+            }
+            _ => {
+                s.order.push(i);
+                i += 1;
+            }
+        }
+    }
+    s.order.extend(tail);
 }
 
 fn pt(p: [f64; 2]) -> Point {
@@ -86,10 +116,7 @@ pub(crate) fn boundary(
         n,
         s.edges.iter().map(|e| e.p),
     );
-    s.order.clear();
-    s.order.extend(0..n as u32);
-    s.order
-        .sort_unstable_by(|&a, &b| lex(hot[a as usize], hot[b as usize]));
+    sweep_order(s, hot);
     s.above.clear();
     s.above.resize(s.edges.len(), 0);
     s.status.assign(&[], s.edges.len());
@@ -142,5 +169,46 @@ pub(crate) fn boundary(
             }
         }
         s.status.replace(lo, hi, &s.new);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{lex, sweep_order, Scratch};
+    use core::cmp::Ordering;
+
+    /// The merge of a sorted run with the sorted rest is the full sort, whatever the
+    /// run's length (none, all, or the input's positions before a few crossings).
+    #[test]
+    fn sweep_order_sorts_whatever_the_sorted_run() {
+        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        let mut next = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 40) as f64
+        };
+        for (sorted, rest) in [
+            (0, 0),
+            (1, 0),
+            (0, 5),
+            (50, 0),
+            (50, 7),
+            (3, 40),
+            (200, 200),
+        ] {
+            let mut hot: Vec<[f64; 2]> = (0..sorted + rest).map(|_| [next(), next()]).collect();
+            hot[..sorted].sort_by(|a, b| lex(*a, *b));
+            hot.dedup();
+            let mut s = Scratch::default();
+            sweep_order(&mut s, &hot);
+            let mut expected: Vec<u32> = (0..hot.len() as u32).collect();
+            expected.sort_by(|&a, &b| lex(hot[a as usize], hot[b as usize]));
+            assert_eq!(s.order, expected, "{sorted} sorted, {rest} after");
+            assert!(s
+                .order
+                .windows(2)
+                .all(|w| lex(hot[w[0] as usize], hot[w[1] as usize]) == Ordering::Less));
+        }
     }
 }

@@ -342,7 +342,8 @@ fn warmed_up_triangulate_many_allocates_its_results_and_one_job() {
 }
 
 /// Mark-and-cut (one large polygon on two threads, the size it starts at lowered) keeps
-/// its marks between calls: a second call allocates nothing on any thread.
+/// its marks between calls: once each thread has worked, a call allocates nothing on any
+/// thread (two calls in a row).
 fn warmed_up_mark_and_cut_allocates_nothing() {
     let (name, flat, nesting) = inputs()
         .into_iter()
@@ -360,14 +361,20 @@ fn warmed_up_mark_and_cut_allocates_nothing() {
     tri.triangulate(&flat.vertices, &flat.ring_starts, &opts, &mut out)
         .expect("valid");
     assert_ne!(out, one, "{name}: mark-and-cut did not run");
-    EVERY_COUNT.store(0, Ordering::Relaxed);
-    EVERY_THREAD.store(true, Ordering::Relaxed);
-    let again = tri.triangulate(&flat.vertices, &flat.ring_starts, &opts, &mut out);
-    EVERY_THREAD.store(false, Ordering::Relaxed);
-    assert!(again.is_ok());
-    let n = EVERY_COUNT.load(Ordering::Relaxed);
-    assert_eq!(
-        n, 0,
-        "{name} by mark-and-cut: {n} allocations on the second call"
-    );
+    // A pool thread that woke too late to take a chunk in the first call allocates its
+    // buffers on its first chunk, in a later call (a loaded machine): the calls settle
+    // within a few, and from then on allocate nothing.
+    let mut counts = Vec::new();
+    for _ in 0..8 {
+        EVERY_COUNT.store(0, Ordering::Relaxed);
+        EVERY_THREAD.store(true, Ordering::Relaxed);
+        let again = tri.triangulate(&flat.vertices, &flat.ring_starts, &opts, &mut out);
+        EVERY_THREAD.store(false, Ordering::Relaxed);
+        assert!(again.is_ok());
+        counts.push(EVERY_COUNT.load(Ordering::Relaxed));
+        if counts.ends_with(&[0, 0]) {
+            return;
+        }
+    }
+    panic!("{name} by mark-and-cut: allocations on each call after the first: {counts:?}");
 }

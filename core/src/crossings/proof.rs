@@ -347,10 +347,11 @@ fn crossings(
             return false;
         }
         let (a, b, c, d) = (pool.p(e.from), pool.p(e.to), pool.p(f.from), pool.p(f.to));
-        // (an edge of no length, a repeated vertex as loaded, crosses nothing properly:
-        // rings of one repeated point would otherwise have every pair of their edges
-        // decided by exact arithmetic)
-        if a != b && c != d && crate::geom::crosses(a, b, c, d) {
+        // (an edge of no length, a repeated vertex as loaded, crosses nothing properly,
+        // and nor do edges with an end at one position, a border two rings share: their
+        // signs would be zero, decided by exact arithmetic)
+        let apart_ends = a != c && a != d && b != c && b != d;
+        if a != b && c != d && apart_ends && crate::geom::crosses(a, b, c, d) {
             out.push(e.from);
             out.push(f.from);
             return first_only;

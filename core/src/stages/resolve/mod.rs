@@ -260,6 +260,11 @@ fn find_crossings(s: &mut Scratch, lo: [f64; 2], hi: [f64; 2], grid: SnapGrid, r
             let (a, b) = (hot[e.a as usize], hot[e.b as usize]);
             for &j in &list[k + 1..] {
                 let f = edges[j as usize];
+                // (edges with an end in common cross nowhere inside both: a border two
+                // rings share, say, whose signs would all be exact zeros)
+                if e.a == f.a || e.a == f.b || e.b == f.a || e.b == f.b {
+                    continue;
+                }
                 let (c, d) = (hot[f.a as usize], hot[f.b as usize]);
                 // (boxes first: in a crowded cell most pairs lie apart)
                 let apart = a[0].max(b[0]) < c[0].min(d[0])

@@ -64,6 +64,12 @@ pub(crate) struct Scratch {
     edges: Vec<Edge>,
     /// The input's vertices by position ([`ordered_bits`] of x and y), then index.
     keyed: Vec<([u64; 2], u32)>,
+    /// The edges by their ends (the lower hot point above the higher), then index.
+    by_ends: Vec<(u64, u32)>,
+    /// Per edge: cancelled by others between the same two points.
+    cancelled: Vec<bool>,
+    /// Per input position: how many input vertices lie there (up to 255).
+    shared_at: Vec<u8>,
     cells: Cells,
     crossings: Vec<([f64; 2], u32, u32)>,
     /// The pairs of edges found crossing (each once after sorting).
@@ -111,6 +117,7 @@ pub(crate) fn resolve(
     }
     distinct_positions(s, vertices);
     collect_edges(s, vertices, ring_starts);
+    drop_cancelling_edges(s);
     s.typical = typical_extent(&s.edges, &s.hot);
     let (lo, hi) = bounds(&s.hot);
     let reach = grid.half_width(
@@ -203,6 +210,67 @@ fn collect_edges(s: &mut Scratch, vertices: &[[f64; 2]], ring_starts: &[usize]) 
                 });
             }
         }
+    }
+}
+
+/// Drops every group of edges between the same two points whose directions cancel (a
+/// border two rings share, run once each way): they change no winding number. Snap
+/// rounding the other edges alone is snap rounding of a set of segments with every input
+/// position still hot, so the argument holds as it is; only crossings of the dropped edges
+/// are not rounded and added, which moves nothing. Groups that do not cancel stay whole.
+fn drop_cancelling_edges(s: &mut Scratch) {
+    // (only edges with both ends where several input vertices lie can have company: where
+    // few positions are shared, few edges are sorted)
+    s.shared_at.clear();
+    s.shared_at.resize(s.hot.len(), 0);
+    for &h in &s.vertex_hot {
+        let count = &mut s.shared_at[h as usize];
+        *count = count.saturating_add(1);
+    }
+    let shared = |h: u32| s.shared_at[h as usize] > 1;
+    s.by_ends.clear();
+    s.by_ends.extend(
+        (s.edges.iter().enumerate())
+            .filter(|(_, e)| shared(e.a) && shared(e.b))
+            .map(|(i, e)| {
+                let (lo, hi) = (e.a.min(e.b), e.a.max(e.b));
+                (u64::from(lo) << 32 | u64::from(hi), i as u32)
+            }),
+    );
+    if s.by_ends.len() < 2 {
+        return;
+    }
+    s.by_ends.sort_unstable();
+    s.cancelled.clear();
+    s.cancelled.resize(s.edges.len(), false);
+    let mut any = false;
+    for group in s.by_ends.chunk_by(|x, y| x.0 == y.0) {
+        if group.len() < 2 {
+            continue;
+        }
+        let net: i64 = (group.iter())
+            .map(|&(_, i)| {
+                let e = s.edges[i as usize];
+                if e.a < e.b {
+                    1
+                } else {
+                    -1
+                }
+            })
+            .sum();
+        if net == 0 {
+            any = true;
+            for &(_, i) in group {
+                s.cancelled[i as usize] = true;
+            }
+        }
+    }
+    if any {
+        let mut k = 0;
+        s.edges.retain(|_| {
+            k += 1;
+            !s.cancelled[k - 1]
+        });
     }
 }
 
@@ -577,6 +645,31 @@ mod tests {
         ]);
         assert_eq!(added, 0);
         assert_eq!(a, [9.0, 9.0, 8.0, 1.0, 0.0]);
+    }
+
+    /// Two squares sharing a side (a layer's neighbours: the side run once each way)
+    /// and a thin triangle across that side: the shared side changes no winding number,
+    /// so its crossings with the triangle add nothing; one run the same way twice is
+    /// kept, and its crossings are added.
+    #[test]
+    fn a_border_run_both_ways_cancels_before_crossings_are_rounded() {
+        let sliver = vec![[1.5, 0.5], [2.5, 0.6], [2.5, 0.7]];
+        let (a, added) = areas(&[square(0.0, 0.0, 2.0), square(2.0, 0.0, 2.0), sliver.clone()]);
+        assert_eq!(added, 0);
+        // the sliver (0.05) inside the union of the squares (8): even-odd cuts it out,
+        // it winds twice there
+        let near = |x: [f64; 5], y: [f64; 5]| x.iter().zip(&y).all(|(p, q)| (p - q).abs() < 1e-12);
+        assert!(near(a, [7.95, 8.0, 8.0, 0.0, 0.05]), "{a:?}");
+        // the right square turned round: its left side runs the way the left square's
+        // right side does, and both cross the sliver, which gets two added vertices
+        let (b, added) = areas(&[
+            square(0.0, 0.0, 2.0),
+            reversed(square(2.0, 0.0, 2.0)),
+            sliver,
+        ]);
+        assert_eq!(added, 2);
+        // (the sliver's part right of x = 2 is 0.0375; it winds 0 there, and 2 on the left)
+        assert!(near(b, [7.95, 7.9625, 4.0, 3.9625, 0.0125]), "{b:?}");
     }
 
     #[test]

@@ -2,9 +2,12 @@
 //! bounding exactly the region a [`FillRule`] selects, for the usual pipeline to
 //! triangulate.
 //!
-//! 1. **Crossings.** Every pair of edges crossing at a point interior to both is found
-//!    (a bucket grid proposes pairs, [`crosses`] decides) and the crossing point is
-//!    rounded to the coordinate type's grid, exactly ([`SnapGrid::crossing`]).
+//! 1. **Crossings.** Groups of edges between the same two points whose directions
+//!    cancel (a border two rings share) are dropped first: they change no winding number
+//!    ([`drop_cancelling_edges`]). Every pair of the other edges crossing at a point
+//!    interior to both is found (a bucket grid proposes pairs, [`crosses`] decides) and
+//!    the crossing point is rounded to the coordinate type's grid, exactly
+//!    ([`SnapGrid::crossing`]).
 //! 2. **Snap rounding** (Hobby; Guibas and Marimont), only when some edges cross. The
 //!    *hot pixels* are the pixels (the points rounding to a grid point) of the input's
 //!    vertices and of the rounded crossings. Each edge becomes the polyline through the

@@ -167,3 +167,32 @@ fn pentagram_under_each_rule() {
         }
     }
 }
+
+/// A hole whose edge runs out through its outer ring and straight back (a spike's tip
+/// outside): the edges as given cross, the region is the outer ring less the hole, the
+/// spike enclosing nothing. Every rule, strategy and precision gives the oracle's region.
+/// The outer ring has 200 vertices, past the small stage: there a fill rule's first try
+/// (strict mode's check of the filtered rings, which passes) triangulates the rings
+/// without searching the input's edges for the crossing the spike hid, and even–odd adds
+/// nothing; `resolve` would add the point where the spike crosses.
+#[test]
+fn a_spike_through_another_ring_encloses_nothing() {
+    let outer = (0..200).map(|k| {
+        let t = std::f64::consts::TAU * f64::from(k) / 200.0;
+        [2.0 + 8.0 * t.cos(), 2.0 + 8.0 * t.sin()]
+    });
+    // the hole clockwise, its spike from (3, 1) up to (3, 20) and back down to (3, 2)
+    let hole = [[1.0, 1.0], [1.0, 2.0], [3.0, 2.0], [3.0, 20.0], [3.0, 1.0]];
+    let vertices: Vec<[f64; 2]> = outer.chain(hole).collect();
+    for rule in FillRule::ALL {
+        for strategy in [Strategy::Fast, Strategy::Quality, Strategy::Seidel] {
+            for f32 in [false, true] {
+                let failure = judge(&vertices, &[0, 200], rule, strategy, f32);
+                assert_eq!(failure, None, "{rule:?} {strategy:?} f32 {f32}");
+            }
+        }
+    }
+    let options = Options::new().with_fill_rule(FillRule::EvenOdd);
+    let (_, added) = run(&vertices, &[0, 200], &options).expect("even-odd");
+    assert!(added.is_empty(), "{added:?}");
+}

@@ -77,8 +77,14 @@ pub(crate) struct Context {
     pub lenient: bool,
     /// Strict mode, for a caller that only asks whether the input passes (a fill rule's
     /// first try): `clean` refuses at the first crossing its proof meets, whichever it
-    /// is, without the sweep that finds the one strict mode names. Cleared by `reset`.
+    /// is, without the sweep that finds the one strict mode names, and does not search
+    /// the edges as loaded for a crossing a dropped spike hid (`hidden_unchecked` says
+    /// where it did not). Cleared by `reset`.
     pub probe: bool,
+    /// With `probe`: the filter dropped a spike's tip or a ring of no area, and `clean`
+    /// did not look for a crossing of the edges as loaded that the drop hid (the filtered
+    /// rings' own check passed or not, as it says). Cleared by `reset`.
+    pub hidden_unchecked: bool,
     /// `clean` keeps straight vertices: a first try dropped one where edges then crossed.
     /// Set for the rest of the call (every lenient rerun included).
     pub keep_collinear: bool,
@@ -115,6 +121,7 @@ impl Context {
         self.repairs.clear();
         self.lenient = lenient;
         self.probe = false;
+        self.hidden_unchecked = false;
         self.split_lobes = false;
         self.rings_doubled = false;
         self.edge_index.invalidate();

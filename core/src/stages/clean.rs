@@ -73,7 +73,11 @@ pub(crate) fn clean(cx: &mut Context, s: &mut Scratch, untwist: bool) -> Result<
     // (strict mode, dropped geometry: see `refuse_hidden_crossing`; where no edge the
     // filter took away crosses another, any crossing is one of the filtered rings' too, and
     // the full search waits until the sweep finds one: its error names the same pair)
-    let hidden = !cx.lenient && dropped_geometry(cx, dropped_before);
+    let dropped = !cx.lenient && dropped_geometry(cx, dropped_before);
+    // (a caller that only asks whether the input passes does without that search, and is
+    // told so: a crossing hidden there is `resolve`'s to find)
+    let hidden = dropped && !cx.probe;
+    cx.hidden_unchecked |= dropped && cx.probe;
     #[cfg(test)]
     let shortcut = !s.full_search;
     #[cfg(not(test))]

@@ -71,6 +71,7 @@ pub(crate) fn triangulate<T: Coord>(
         }
         Strict::Crossed => false,
         Strict::Checked => true,
+        Strict::Unsure => false,
         Strict::Declined => {
             // the input's own errors (non-finite coordinates, ring starts), as strict
             // mode gives them; and strict mode's crossing check (a sweep, O(n log n)):
@@ -80,7 +81,7 @@ pub(crate) fn triangulate<T: Coord>(
             cx.reset(false);
             cx.probe = true;
             load::load(cx, vertices, ring_starts)?;
-            clean::clean(cx, &mut st.clean, false).is_ok()
+            clean::clean(cx, &mut st.clean, false).is_ok() && !cx.hidden_unchecked
         }
     };
     out.clear();
@@ -203,6 +204,10 @@ enum Strict {
     Crossed,
     /// No edges cross, but strict mode refused the input or reads it otherwise.
     Checked,
+    /// No edges of the filtered rings cross, and strict mode refused the input or reads it
+    /// otherwise; edges of the input as loaded may cross where the filter dropped a
+    /// spike's tip (not searched).
+    Unsure,
     /// Not known whether edges cross: strict mode refused the input before its check
     /// passed for another reason (a bad number, say, or a small input refused as it was
     /// triangulated), or the rule is abs ≥ 2.
@@ -301,13 +306,23 @@ fn strict_first<T: Coord>(
         Err(Error::EdgesCross { .. }) => return Strict::Crossed,
         Err(_) => return Strict::Declined,
     }
+    // (where the check passed: strict mode's triangles of the filtered rings are the
+    // rule's region all the same, a spike's tip enclosing nothing; but only where no
+    // spike was dropped is it known that no input edges cross)
+    let refused = |cx: &Context| {
+        if cx.hidden_unchecked {
+            Strict::Unsure
+        } else {
+            Strict::Checked
+        }
+    };
     // (the rules other than even–odd take no rings touching)
     let shared = cx.shared.len();
     if shared > cx.pool.len() / SHARED_MAX || (shared > 0 && rule != FillRule::EvenOdd) {
-        return Strict::Checked;
+        return refused(cx);
     }
     if pipeline::nest(cx, st, Nesting::Auto).is_err() {
-        return Strict::Checked;
+        return refused(cx);
     }
     if rule != FillRule::EvenOdd {
         // (a ring's nodes lie in the pool in input order: a live ring of three nodes or
@@ -321,26 +336,26 @@ fn strict_first<T: Coord>(
         let mut runs = cx.rings.iter().filter(|r| r.alive).map(|r| given(r.start));
         let run = (runs.next()).and_then(|first| runs.all(|g| g == first).then_some(first));
         if !reads_as_nested(rule, run) {
-            return Strict::Checked;
+            return refused(cx);
         }
     }
     if seidel {
         // the checked rings as `Strategy::Seidel` takes valid input without a fill rule
         // (rings winding twice are strict mode's error, found where rings touch)
         let Some(counts) = checked_rings(cx, fs) else {
-            return Strict::Checked;
+            return refused(cx);
         };
         if !cx.shared.is_empty() && pipeline::join(cx, st).is_err() {
-            return Strict::Checked;
+            return refused(cx);
         }
         return match seidel_checked(fs, vertices, counts, out) {
             Ok(made) => Strict::Made(made),
-            Err(_) => Strict::Checked,
+            Err(_) => refused(cx),
         };
     }
     match lenient::finish_checked(cx, st, re, strategy, out) {
         Ok(made) => Strict::Made(made),
-        Err(_) => Strict::Checked,
+        Err(_) => refused(cx),
     }
 }
 

@@ -309,8 +309,9 @@ fn strict_first<T: Coord>(
     // (where the check passed: strict mode's triangles of the filtered rings are the
     // rule's region all the same, a spike's tip enclosing nothing; but only where no
     // spike was dropped is it known that no input edges cross)
-    let refused = |cx: &Context| {
-        if cx.hidden_unchecked {
+    let unsure = cx.hidden_unchecked;
+    let refused = || {
+        if unsure {
             Strict::Unsure
         } else {
             Strict::Checked
@@ -319,10 +320,10 @@ fn strict_first<T: Coord>(
     // (the rules other than even–odd take no rings touching)
     let shared = cx.shared.len();
     if shared > cx.pool.len() / SHARED_MAX || (shared > 0 && rule != FillRule::EvenOdd) {
-        return refused(cx);
+        return refused();
     }
     if pipeline::nest(cx, st, Nesting::Auto).is_err() {
-        return refused(cx);
+        return refused();
     }
     if rule != FillRule::EvenOdd {
         // (a ring's nodes lie in the pool in input order: a live ring of three nodes or
@@ -336,26 +337,26 @@ fn strict_first<T: Coord>(
         let mut runs = cx.rings.iter().filter(|r| r.alive).map(|r| given(r.start));
         let run = (runs.next()).and_then(|first| runs.all(|g| g == first).then_some(first));
         if !reads_as_nested(rule, run) {
-            return refused(cx);
+            return refused();
         }
     }
     if seidel {
         // the checked rings as `Strategy::Seidel` takes valid input without a fill rule
         // (rings winding twice are strict mode's error, found where rings touch)
         let Some(counts) = checked_rings(cx, fs) else {
-            return refused(cx);
+            return refused();
         };
         if !cx.shared.is_empty() && pipeline::join(cx, st).is_err() {
-            return refused(cx);
+            return refused();
         }
         return match seidel_checked(fs, vertices, counts, out) {
             Ok(made) => Strict::Made(made),
-            Err(_) => refused(cx),
+            Err(_) => refused(),
         };
     }
     match lenient::finish_checked(cx, st, re, strategy, out) {
         Ok(made) => Strict::Made(made),
-        Err(_) => refused(cx),
+        Err(_) => refused(),
     }
 }
 

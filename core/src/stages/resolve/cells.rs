@@ -192,16 +192,7 @@ fn clamp_slot(v: f64, n: usize) -> usize {
 #[cfg(test)]
 mod tests {
     use super::Cells;
-
-    /// A seeded xorshift generator in [0, 1): the same cases every run.
-    fn uniform(mut seed: u64) -> impl FnMut() -> f64 {
-        move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        }
-    }
+    use crate::testing::unit_random;
 
     /// The grids' contract: a segment's buckets hold every listed point within `pad` of
     /// it, whether the cells are spread over the box or, on clustered input, about a
@@ -210,7 +201,7 @@ mod tests {
     /// pad of a point on each) among random ones, then looked up segment by segment.
     #[test]
     fn a_segment_meets_the_bucket_of_every_point_near_it() {
-        let mut next = uniform(0x9e37_79b9_7f4a_7c15);
+        let mut next = unit_random(0x9e37_79b9_7f4a_7c15);
         for (case, (cluster, typical)) in [(1.0, f64::INFINITY), (0.01, 0.002), (0.001, 1e-4)]
             .into_iter()
             .enumerate()

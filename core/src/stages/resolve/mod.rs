@@ -280,15 +280,15 @@ fn drop_cancelling_edges(s: &mut Scratch) {
 /// Twice the mean extent of `edges` (the longer side of each one's box); infinite when
 /// there are none.
 fn typical_extent(edges: &[Edge], hot: &[[f64; 2]]) -> f64 {
+    if edges.is_empty() {
+        return f64::INFINITY;
+    }
     let sum: f64 = (edges.iter())
         .map(|e| {
             let (a, b) = (hot[e.a as usize], hot[e.b as usize]);
             (a[0] - b[0]).abs().max((a[1] - b[1]).abs())
         })
         .sum();
-    if edges.is_empty() {
-        return f64::INFINITY;
-    }
     2.0 * sum / edges.len() as f64
 }
 

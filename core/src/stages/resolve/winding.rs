@@ -175,19 +175,15 @@ pub(crate) fn boundary(
 #[cfg(test)]
 mod tests {
     use super::{lex, sweep_order, Scratch};
+    use crate::testing::random;
     use core::cmp::Ordering;
 
     /// The merge of a sorted run with the sorted rest is the full sort, whatever the
     /// run's length (none, all, or the input's positions before a few crossings).
     #[test]
     fn sweep_order_sorts_whatever_the_sorted_run() {
-        let mut seed = 0x2545_f491_4f6c_dd1du64;
-        let mut next = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 40) as f64
-        };
+        let mut random = random(0x2545_f491_4f6c_dd1d);
+        let mut next = || random(1 << 24) as f64;
         for (sorted, rest) in [
             (0, 0),
             (1, 0),

@@ -7,7 +7,7 @@ use super::lenient::{self, Outcome, Reruns};
 use super::pipeline::{self, Stages};
 use crate::context::Context;
 use crate::geom::{orient2d, Coord, Orientation, Point, SnapGrid};
-use crate::report::{DropReason, Dropped};
+use crate::report::{Added, DropReason, Dropped};
 use crate::stages::{clean, load, resolve, seidel, small};
 use crate::structures::NodeId;
 use crate::{Error, FillRule, Nesting, Options, Strategy};
@@ -63,6 +63,7 @@ pub(crate) fn triangulate<T: Coord>(
         options.strategy,
         out,
     );
+    let crossed = matches!(tried, Strict::Crossed);
     let uncrossed = match tried {
         Strict::Made(made) => {
             cx.added.clear();
@@ -91,6 +92,29 @@ pub(crate) fn triangulate<T: Coord>(
     let grid = SnapGrid { f32: T::IS_F32 };
     let mut added = core::mem::take(&mut cx.added);
     added.clear();
+    // even–odd where edges only cross: the crossings relinked, if strict mode takes that
+    if crossed && rule == FillRule::EvenOdd && options.strategy != Strategy::Seidel {
+        let made = relinked(cx, st, re, fs, ring_starts, grid, options, &mut added, out);
+        match made {
+            Ok(Some(made)) => {
+                cx.added = added;
+                let map = &fs.resolve.map;
+                for v in out.iter_mut().flatten() {
+                    *v = map[*v as usize];
+                }
+                report_unused_input(&mut cx.dropped, fs, vertices, ring_starts, out);
+                return Ok(made);
+            }
+            Ok(None) => {
+                out.clear();
+                added.clear();
+            }
+            Err(e) => {
+                cx.added = added;
+                return Err(e);
+            }
+        }
+    }
     let resolved = resolve::resolve(
         &mut fs.resolve,
         &fs.vertices,
@@ -140,6 +164,32 @@ pub(crate) fn triangulate<T: Coord>(
     // the vertices the pipeline left out are the resolved rings', not the input's
     report_unused(&mut cx.dropped, &mut fs.used, r, ring_starts, out);
     Ok(made)
+}
+
+/// The even–odd rule's short way where edges cross ([`resolve::uncross`]): the crossings
+/// relinked into rings that touch there, triangulated by strict mode, into `out` with the
+/// rings' vertices (not yet the output's: `fs.resolve.map` maps them). `None` where the
+/// short way declines or strict mode refuses the rings (then `resolve` decides).
+#[allow(clippy::too_many_arguments)] // the call's input, its state and its output
+fn relinked(
+    cx: &mut Context,
+    st: &mut Stages,
+    re: &mut Reruns,
+    fs: &mut Scratch,
+    ring_starts: &[usize],
+    grid: SnapGrid,
+    options: &Options,
+    added: &mut Vec<Added>,
+    out: &mut Vec<[u32; 3]>,
+) -> Result<Option<Outcome>, Error> {
+    if !resolve::uncross(&mut fs.resolve, &fs.vertices, ring_starts, grid, added)? {
+        return Ok(None);
+    }
+    let r = &fs.resolve;
+    let strict = Options::new()
+        .with_strategy(options.strategy)
+        .with_nesting(Nesting::Auto);
+    Ok(lenient::triangulate(cx, st, re, &r.rings, &r.ring_starts, &strict, out).ok())
 }
 
 /// The input vertices no triangle uses, and why, into `dropped`: another vertex at the

@@ -39,7 +39,10 @@
 
 mod cells;
 mod trace;
+mod uncross;
 mod winding;
+
+pub(crate) use uncross::uncross;
 
 use cells::Cells;
 
@@ -87,6 +90,7 @@ pub(crate) struct Scratch {
     split: Vec<(u32, u32, i32)>,
     winding: winding::Scratch,
     trace: trace::Scratch,
+    uncross: uncross::Scratch,
     /// The result: rings of positions, their starts, and each position's output index;
     /// and the same rings as distinct points (`hot`, whose output indices are `hot_out`).
     pub rings: Vec<[f64; 2]>,
@@ -675,15 +679,19 @@ mod tests {
         assert!(near(b, [7.95, 7.9625, 4.0, 3.9625, 0.0125]), "{b:?}");
     }
 
-    #[test]
-    fn a_pentagram_has_points_by_even_odd_and_a_centre_by_nonzero() {
-        let star: Vec<[f64; 2]> = (0..5)
+    /// A pentagram of radius 100: each edge crosses two others.
+    pub(super) fn pentagram() -> Vec<[f64; 2]> {
+        (0..5)
             .map(|k| {
                 let t = core::f64::consts::FRAC_PI_2 + 4.0 * core::f64::consts::PI * k as f64 / 5.0;
                 [100.0 * t.cos(), 100.0 * t.sin()]
             })
-            .collect();
-        let (a, added) = areas(&[star]);
+            .collect()
+    }
+
+    #[test]
+    fn a_pentagram_has_points_by_even_odd_and_a_centre_by_nonzero() {
+        let (a, added) = areas(&[pentagram()]);
         assert_eq!(added, 5);
         // the pentagram's centre pentagon has winding 2: nonzero − even-odd = abs ≥ 2
         assert!((a[1] - a[0] - a[4]).abs() < 1e-9 * a[1], "{a:?}");

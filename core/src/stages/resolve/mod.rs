@@ -137,7 +137,7 @@ pub(crate) fn resolve(
     if uncrossed {
         s.crossings.clear();
     } else {
-        find_crossings(s, lo, hi, grid, reach);
+        find_crossings(s, lo, hi, grid, reach, None);
     }
     add_crossings(s, vertices.len(), added)?;
     if s.crossings.is_empty() {
@@ -315,8 +315,18 @@ fn point(p: [f64; 2]) -> Point {
     Point::new(p[0], p[1])
 }
 
-/// Every pair of edges crossing inside both, with the crossing rounded to the grid.
-fn find_crossings(s: &mut Scratch, lo: [f64; 2], hi: [f64; 2], grid: SnapGrid, reach: f64) {
+/// Every pair of edges crossing inside both, with the crossing rounded to the grid. With
+/// `contacts`, also where other pairs of edges (no neighbours) meet at a vertex: each
+/// vertex lying inside another edge, as (vertex, that edge's start), and each two
+/// vertices at one position, each as (vertex, `u32::MAX`).
+fn find_crossings(
+    s: &mut Scratch,
+    lo: [f64; 2],
+    hi: [f64; 2],
+    grid: SnapGrid,
+    reach: f64,
+    mut contacts: Option<&mut Vec<(u32, u32)>>,
+) {
     s.crossings.clear();
     s.cells.reset(lo, hi, s.edges.len(), 8.0 * reach, s.typical);
     let frame = s.cells.frame;
@@ -346,8 +356,19 @@ fn find_crossings(s: &mut Scratch, lo: [f64; 2], hi: [f64; 2], grid: SnapGrid, r
                     || c[0].max(d[0]) < a[0].min(b[0])
                     || a[1].max(b[1]) < c[1].min(d[1])
                     || c[1].max(d[1]) < a[1].min(b[1]);
-                if !apart && crosses(point(a), point(b), point(c), point(d)) {
+                if apart {
+                    continue;
+                }
+                if crosses(point(a), point(b), point(c), point(d)) {
                     pairs.push((i.min(j), i.max(j)));
+                } else if let Some(contacts) = contacts.as_deref_mut() {
+                    meet_at_vertices(
+                        contacts,
+                        [(e.a, a), (e.b, b)],
+                        e.from,
+                        [(f.a, c), (f.b, d)],
+                        f.from,
+                    );
                 }
             }
         }
@@ -363,6 +384,30 @@ fn find_crossings(s: &mut Scratch, lo: [f64; 2], hi: [f64; 2], grid: SnapGrid, r
             hot[f.b as usize],
         );
         s.crossings.push((p, e.from, f.from));
+    }
+}
+
+/// Where edges `e` and `f` (their ends: vertex and position; no neighbours, crossing
+/// nowhere inside both) meet at a vertex, into `contacts` (see [`find_crossings`]).
+fn meet_at_vertices(
+    contacts: &mut Vec<(u32, u32)>,
+    e: [(u32, [f64; 2]); 2],
+    e_from: u32,
+    f: [(u32, [f64; 2]); 2],
+    f_from: u32,
+) {
+    for (ends, from, other) in [(e, e_from, f), (f, f_from, e)] {
+        let (a, b) = (point(ends[0].1), point(ends[1].1));
+        for (v, q) in other {
+            if q == ends[0].1 || q == ends[1].1 {
+                // (the vertex of this edge there is pushed from the other side)
+                contacts.push((v, u32::MAX));
+            } else if within_box(a, b, point(q))
+                && orient2d(a, b, point(q)) == Orientation::Collinear
+            {
+                contacts.push((v, from));
+            }
+        }
     }
 }
 

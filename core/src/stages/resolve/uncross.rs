@@ -16,20 +16,26 @@
 //!
 //! **Why they do not cross.** Where a → p → b crosses c → p → d, the four directions
 //! round p alternate between the two lines (a, c, b, d or a, d, b, c); the relinked passes
-//! a → p → d and c → p → b each take two neighbouring directions, so they touch at p. That
-//! holds for the exact crossing; the rounded point may upset it (or make a split edge pass
-//! on the other side of a vertex) where edges come within a pixel of each other. Nothing
-//! here relies on it: the pipeline's strict check decides exactly whether the relinked
-//! rings cross anywhere, and its triangles are then exact for them.
+//! a → p → d and c → p → b each take two neighbouring directions, so they touch at p.
+//! Where more edges cross at one point (or their crossings round to one point), its ways
+//! in and out, by angle, are paired as parentheses pair ([`relink_round`]): no two pairs
+//! interleave. That holds for exact crossings; a rounded point may upset it (or make a
+//! split edge pass on the other side of a vertex) where edges come within a pixel of each
+//! other. Nothing here relies on it: the pipeline's strict check decides exactly whether
+//! the relinked rings cross anywhere, and its triangles are then exact for them.
 //!
-//! The short way declines (the long way runs) where some edges overlap or meet without
-//! crossing properly only if no edge crosses at all, where two crossings round to one
-//! point, or a crossing rounds onto an end of its edges.
+//! A crossing that rounds onto an end of one of its edges adds no vertex: that edge
+//! passes through the point at its vertex, and that pass is relinked with the others.
+//! The short way declines (the long way runs) where no edges cross properly (they only
+//! overlap or meet at vertices).
 
-use super::{bounds, find_crossings, typical_extent, Edge, Scratch as Resolve};
-use crate::geom::{in_range, SnapGrid};
+use super::{bounds, find_crossings, point, typical_extent, Edge, Scratch as Resolve};
+use crate::geom::{cmp_around, in_range, Point, SnapGrid};
 use crate::report::Added;
 use crate::Error;
+
+/// No edge or vertex.
+const NONE: u32 = u32::MAX;
 
 /// The short way's buffers.
 #[derive(Debug, Default)]
@@ -37,12 +43,59 @@ pub(crate) struct Scratch {
     /// Each node's successor: the input's vertices first, then the copies of the
     /// crossing points on their edges.
     next: Vec<u32>,
-    /// The crossing points on the edges: (the edge's start vertex, the crossing), sorted
-    /// along each edge; copy `t` is node `n + t`.
+    /// The crossing points (the rounded crossings, each once), each with two edges
+    /// crossing there and its output index.
+    points: Vec<([f64; 2], u32, u32, u32)>,
+    /// The points inside edges: (the edge's start vertex, the point), sorted along each
+    /// edge; copy `t` is node `n + t`.
     on_edges: Vec<(u32, u32)>,
-    /// Each crossing's two copies.
-    copies: Vec<[u32; 2]>,
+    /// The points at vertices (a crossing rounded onto an end of its edge, a vertex
+    /// inside another edge or where another vertex is): (the point, the vertex).
+    at_vertices: Vec<(u32, u32)>,
+    /// Where edges meet at vertices ([`find_crossings`]'s contacts).
+    contacts: Vec<(u32, u32)>,
+    /// What happens at each point: (position, an edge split there or [`NONE`], a vertex
+    /// there or [`NONE`]).
+    marks: Vec<([f64; 2], u32, u32)>,
+    /// Each node's neighbours once the edges are split, before relinking.
+    around: Vec<[u32; 2]>,
+    /// The passes by point: (point, node).
+    by_point: Vec<(u32, u32)>,
+    /// The ways into and out of one point (towards the node before or after a pass), by
+    /// angle: (that node's position, whether it is the way in, the pass).
+    ends: Vec<(Point, bool, u32)>,
+    /// The ways in not yet paired with a way out ([`relink_round`]).
+    open: Vec<u32>,
     seen: Vec<bool>,
+}
+
+/// Pairs the ways in and out of one point (`ends`, by angle round it, as many in as out)
+/// so that no two pairs interleave — each way in with a way out as parentheses pair, read
+/// from just after the lowest running count — and links each pair's copies: the copy of
+/// a way in goes on where the copy of its way out went. Pairs that do not interleave
+/// touch at the point without crossing.
+fn relink_round(
+    next: &mut [u32],
+    ends: &[(Point, bool, u32)],
+    around: &[[u32; 2]],
+    open: &mut Vec<u32>,
+) {
+    let (mut count, mut lowest, mut from) = (0i64, 0i64, 0);
+    for (k, &(_, way_in, _)) in ends.iter().enumerate() {
+        count += if way_in { 1 } else { -1 };
+        if count < lowest {
+            (lowest, from) = (count, k + 1);
+        }
+    }
+    open.clear();
+    for k in 0..ends.len() {
+        let (_, way_in, t) = ends[(from + k) % ends.len()];
+        if way_in {
+            open.push(t);
+        } else if let Some(u) = open.pop() {
+            next[u as usize] = around[t as usize][1];
+        }
+    }
 }
 
 /// Rings of the input's vertices and its rounded crossings whose even–odd region is the
@@ -81,28 +134,55 @@ fn relink(
     if n == 0 || u32::try_from(n).is_err() || !vertices.iter().all(in_grid) {
         return Ok(false);
     }
-    // every vertex its own point (positions shared by several are the pipeline's)
+    // every vertex its own point; a vertex repeating the position of the one before it
+    // on its ring (a closing point, say) is left out (its successor itself), and the
+    // rings link the others
     r.hot.clear();
     r.hot
         .extend(vertices.iter().map(|p| [p[0] + 0.0, p[1] + 0.0]));
     s.next.clear();
+    s.next.extend(0..n as u32);
     r.edges.clear();
     for (k, &start) in ring_starts.iter().enumerate() {
         let end = ring_starts.get(k + 1).copied().unwrap_or(n).min(n);
-        for i in start.min(end)..end {
-            let j = if i + 1 < end { i + 1 } else { start };
-            s.next.push(j as u32);
-            if r.hot[i] != r.hot[j] {
-                let (i, j) = (i as u32, j as u32);
-                r.edges.push(Edge {
-                    from: i,
-                    a: i,
-                    b: j,
-                });
+        let Some(first) = (start..end).next() else {
+            continue;
+        };
+        let mut last = first;
+        for i in start + 1..end {
+            if r.hot[i] != r.hot[last] {
+                s.next[last] = i as u32;
+                last = i;
             }
         }
+        // (the ring's last kept vertex at its first one's position: left out too)
+        if last != first && r.hot[last] == r.hot[first] {
+            let mut before = first;
+            while s.next[before] as usize != last {
+                before = s.next[before] as usize;
+            }
+            s.next[last] = last as u32;
+            last = before;
+        }
+        s.next[last] = first as u32;
+        let mut v = first;
+        loop {
+            let w = s.next[v] as usize;
+            if w != v {
+                let (v, w) = (v as u32, w as u32);
+                r.edges.push(Edge {
+                    from: v,
+                    a: v,
+                    b: w,
+                });
+            }
+            if w == first {
+                break;
+            }
+            v = w;
+        }
     }
-    if s.next.len() != n || r.edges.is_empty() {
+    if ring_starts.first() != Some(&0) || r.edges.is_empty() {
         return Ok(false);
     }
     r.typical = typical_extent(&r.edges, &r.hot);
@@ -112,38 +192,73 @@ fn relink(
         .max(lo[1].abs())
         .max(hi[0].abs())
         .max(hi[1].abs());
-    find_crossings(r, lo, hi, grid, grid.half_width(largest));
+    s.contacts.clear();
+    let reach = grid.half_width(largest);
+    find_crossings(r, lo, hi, grid, reach, Some(&mut s.contacts));
     if r.crossings.is_empty() {
         return Ok(false);
     }
     let order = |x: &[f64; 2], y: &[f64; 2]| x[0].total_cmp(&y[0]).then(x[1].total_cmp(&y[1]));
     r.crossings.sort_unstable_by(|x, y| order(&x.0, &y.0));
     let hot = &r.hot;
-    let onto_end = |&(p, e, f): &([f64; 2], u32, u32)| {
-        [e, f]
-            .iter()
-            .any(|&e| p == hot[e as usize] || p == hot[s.next[e as usize] as usize])
-    };
-    let twice = r.crossings.windows(2).any(|w| w[0].0 == w[1].0);
-    if twice || r.crossings.iter().any(onto_end) {
-        return Ok(false);
+    // the points: the rounded crossings and the positions where edges meet at vertices,
+    // each once (several edges may pass through one); at each, the edges passing through
+    // it inside are split there, and the vertices there are passes through it too
+    s.marks.clear();
+    for &(p, e, f) in &r.crossings {
+        for e in [e, f] {
+            let end = s.next[e as usize];
+            if p == hot[e as usize] {
+                s.marks.push((p, NONE, e));
+            } else if p == hot[end as usize] {
+                s.marks.push((p, NONE, end));
+            } else {
+                s.marks.push((p, e, NONE));
+            }
+        }
     }
-    // the crossings on each edge, in order from its start: the points met on a segment
-    // have monotone coordinates, so ordering by (±x, ±y) as the edge runs orders them
-    // along it
+    for &(v, e) in &s.contacts {
+        let p = hot[v as usize];
+        s.marks.push((p, NONE, v));
+        if e != NONE {
+            s.marks.push((p, e, NONE));
+        }
+    }
+    s.marks
+        .sort_unstable_by(|x, y| order(&x.0, &y.0).then((x.1, x.2).cmp(&(y.1, y.2))));
+    s.marks.dedup();
+    s.points.clear();
     s.on_edges.clear();
-    for (c, &(_, e, f)) in r.crossings.iter().enumerate() {
-        s.on_edges.push((e, c as u32));
-        s.on_edges.push((f, c as u32));
+    s.at_vertices.clear();
+    let mut crossing = r.crossings.iter().peekable();
+    for &(p, e, v) in &s.marks {
+        if s.points.last().map(|q| q.0) != Some(p) {
+            // (an added vertex names two edges crossing there, if any do)
+            while crossing.next_if(|c| order(&c.0, &p).is_lt()).is_some() {}
+            let edges = crossing
+                .peek()
+                .filter(|c| c.0 == p)
+                .map_or((NONE, NONE), |c| (c.1, c.2));
+            s.points.push((p, edges.0, edges.1, NONE));
+        }
+        let at = (s.points.len() - 1) as u32;
+        if e != NONE {
+            s.on_edges.push((e, at));
+        } else {
+            s.at_vertices.push((at, v));
+        }
     }
+    // the points on each edge, in order from its start: the points met on a segment
+    // have monotone coordinates, so ordering by (±x, ±y) as the edge runs orders them
+    // along it (each point once per edge)
     if u32::try_from(n + s.on_edges.len()).is_err() {
         return Ok(false);
     }
-    let (crossings, next) = (&r.crossings, &s.next);
+    let (points, next) = (&s.points, &s.next);
     s.on_edges.sort_unstable_by(|&(e, c), &(f, d)| {
         e.cmp(&f).then_with(|| {
             let (a, b) = (hot[e as usize], hot[next[e as usize] as usize]);
-            let (p, q) = (crossings[c as usize].0, crossings[d as usize].0);
+            let (p, q) = (points[c as usize].0, points[d as usize].0);
             let along = |p: [f64; 2]| {
                 let sx = if b[0] >= a[0] { p[0] } else { -p[0] };
                 let sy = if b[1] >= a[1] { p[1] } else { -p[1] };
@@ -152,10 +267,9 @@ fn relink(
             order(&along(p), &along(q))
         })
     });
+    s.on_edges.dedup();
     // split the edges: edge i → j becomes i → copies → j
     let base = n as u32;
-    s.copies.clear();
-    s.copies.resize(crossings.len(), [u32::MAX; 2]);
     s.next.resize(n + s.on_edges.len(), 0);
     let mut t = 0;
     while t < s.on_edges.len() {
@@ -165,33 +279,68 @@ fn relink(
         while t < s.on_edges.len() && s.on_edges[t].0 == e {
             let copy = base + t as u32;
             s.next[at as usize] = copy;
-            let slot = &mut s.copies[s.on_edges[t].1 as usize];
-            slot[usize::from(slot[0] != u32::MAX)] = copy;
             (at, t) = (copy, t + 1);
         }
         s.next[at as usize] = end;
     }
-    // at each crossing, the two passes swap their ways on: they touch there
-    for &[u, w] in &s.copies {
-        s.next.swap(u as usize, w as usize);
+    // every node's neighbours before relinking
+    s.around.clear();
+    s.around.resize(s.next.len(), [0; 2]);
+    for (v, &w) in s.next.iter().enumerate() {
+        s.around[v][1] = w;
+        s.around[w as usize][0] = v as u32;
     }
-    // the added vertices, one per crossing (none shares a position with another)
-    let first_added = n + added.len();
-    for &(position, e, f) in crossings.iter() {
-        let vertex = n + added.len();
-        let vertex = u32::try_from(vertex).map_err(|_| Error::TooManyVertices { count: vertex })?;
-        added.push(Added {
-            vertex,
-            position,
-            edges: [e, f],
-        });
+    // each point's output index: the input vertex it rounded onto (the lowest), or an
+    // added vertex
+    for &(at, v) in s.at_vertices.iter().rev() {
+        s.points[at as usize].3 = v;
+    }
+    for point in &mut s.points {
+        if point.3 == NONE {
+            let vertex = n + added.len();
+            let vertex =
+                u32::try_from(vertex).map_err(|_| Error::TooManyVertices { count: vertex })?;
+            added.push(Added {
+                vertex,
+                position: point.0,
+                edges: [point.1, point.2],
+            });
+            point.3 = vertex;
+        }
+    }
+    // at each point, the passes through it (copies and vertices) relinked so that they
+    // touch
+    let position = |v: u32| {
+        if v < base {
+            hot[v as usize]
+        } else {
+            s.points[s.on_edges[(v - base) as usize].1 as usize].0
+        }
+    };
+    s.by_point.clear();
+    let copies = (0..s.on_edges.len() as u32).map(|t| (s.on_edges[t as usize].1, base + t));
+    s.by_point
+        .extend(copies.chain(s.at_vertices.iter().copied()));
+    s.by_point.sort_unstable();
+    for group in s.by_point.chunk_by(|x, y| x.0 == y.0) {
+        let o = point(s.points[group[0].0 as usize].0);
+        // each pass's way in and way out, by angle round the point
+        s.ends.clear();
+        for &(_, v) in group {
+            let [before, after] = s.around[v as usize];
+            s.ends.push((point(position(before)), true, v));
+            s.ends.push((point(position(after)), false, v));
+        }
+        s.ends.sort_by(|x, y| cmp_around(o, x.0, y.0));
+        relink_round(&mut s.next, &s.ends, &s.around, &mut s.open);
     }
     // the rings: the cycles of the successors, from every node not yet on one
     let nodes = s.next.len();
     s.seen.clear();
     s.seen.resize(nodes, false);
     for start in 0..nodes {
-        if s.seen[start] {
+        // (a vertex left out is its own successor)
+        if s.seen[start] || s.next[start] as usize == start {
             continue;
         }
         r.ring_starts.push(r.rings.len());
@@ -202,7 +351,7 @@ fn relink(
                 (hot[v], v as u32)
             } else {
                 let c = s.on_edges[v - n].1 as usize;
-                (crossings[c].0, (first_added + c) as u32)
+                (s.points[c].0, s.points[c].3)
             };
             r.rings.push(position);
             r.map.push(id);
@@ -298,7 +447,31 @@ mod tests {
             [4.0, 6.0],
             [0.0, 4.0],
         ];
-        let cases: [(&str, Rings, usize); 4] = [
+        // three edges through the origin
+        let asterisk = vec![
+            [-2.0, -1.0],
+            [2.0, 1.0],
+            [2.0, -1.0],
+            [-2.0, 1.0],
+            [0.0, 2.0],
+            [0.0, -2.0],
+        ];
+        // a triangle crossing a band's edge at its vertex (2, 0), and inside the edge at
+        // (3, 0); a ring touching a square's corner (4, 4) and crossing two of its sides
+        let through_vertex = vec![[1.0, -1.0], [2.0, 0.0], [3.0, 1.0], [3.0, -1.0]];
+        let at_corner = vec![[2.0, 5.0], [4.0, 4.0], [6.0, 5.0], [5.0, 1.0]];
+        let cases: [(&str, Rings, usize); 7] = [
+            ("three edges through one point", vec![asterisk], 1),
+            (
+                "a ring crossing an edge at its vertex",
+                vec![square(0.0, 0.0, 4.0), through_vertex],
+                1,
+            ),
+            (
+                "a ring through another's corner",
+                vec![square(0.0, 0.0, 4.0), at_corner],
+                2,
+            ),
             ("bow tie", vec![bow_tie], 1),
             (
                 "overlapping squares",
@@ -349,6 +522,30 @@ mod tests {
         assert!(
             (relinked_area - area).abs() < 1e-9 * area.abs(),
             "{relinked_area} {area}"
+        );
+    }
+
+    /// Edges from a vertex cross another edge within rounding of that vertex: the
+    /// crossings round onto it, nothing is added, and the other edge passes through the
+    /// vertex instead.
+    #[test]
+    fn crossings_rounded_onto_a_vertex_go_through_it() {
+        // the bottom edge of the band runs from (0, 1) to (2, 1 − 2⁻⁵³): at x = 1 it is
+        // 2⁻⁵⁴ below the triangle's top vertex (1, 1), and both of the triangle's edges
+        // there cross it, at points that round to (1, 1)
+        let low = 1.0 - f64::EPSILON / 2.0;
+        let band = vec![[0.0, 1.0], [2.0, low], [2.0, 3.0], [0.0, 3.0]];
+        let triangle = vec![[1.0, 1.0], [1.0, 0.0], [0.5, 0.5]];
+        let rings = [band, triangle];
+        let (relinked, added) = relinked(&rings).expect("relinked");
+        assert!(added.is_empty(), "{added:?}");
+        assert_eq!(relinked.iter().map(Vec::len).sum::<usize>(), 8);
+        assert_valid(&relinked, "rounded onto a vertex");
+        let (area, _) = even_odd(&rings);
+        let (relinked_area, _) = even_odd(&relinked);
+        assert!(
+            (relinked_area - area).abs() < 1e-12,
+            "{relinked_area} against {area}"
         );
     }
 

@@ -137,7 +137,7 @@ pub(crate) fn resolve(
     if uncrossed {
         s.crossings.clear();
     } else {
-        find_crossings(s, lo, hi, grid, reach, None);
+        find_crossings(s, lo, hi, grid, reach, None, [usize::MAX; 2]);
     }
     add_crossings(s, vertices.len(), added)?;
     if s.crossings.is_empty() {
@@ -318,7 +318,9 @@ fn point(p: [f64; 2]) -> Point {
 /// Every pair of edges crossing inside both, with the crossing rounded to the grid. With
 /// `contacts`, also where other pairs of edges (no neighbours) meet at a vertex: each
 /// vertex lying inside another edge, as (vertex, that edge's start), and each two
-/// vertices at one position, each as (vertex, `u32::MAX`).
+/// vertices at one position, each as (vertex, `u32::MAX`). Stops, returning false, once
+/// more than `most[0]` crossing pairs or `most[1]` contacts are found (counted in every
+/// cell two edges share, so up to a few times each).
 fn find_crossings(
     s: &mut Scratch,
     lo: [f64; 2],
@@ -326,7 +328,8 @@ fn find_crossings(
     grid: SnapGrid,
     reach: f64,
     mut contacts: Option<&mut Vec<(u32, u32)>>,
-) {
+    most: [usize; 2],
+) -> bool {
     s.crossings.clear();
     s.cells.reset(lo, hi, s.edges.len(), 8.0 * reach, s.typical);
     let frame = s.cells.frame;
@@ -370,6 +373,10 @@ fn find_crossings(
                         f.from,
                     );
                 }
+                let met = contacts.as_deref().map_or(0, Vec::len);
+                if pairs.len() > most[0] || met > most[1] {
+                    return false;
+                }
             }
         }
     }
@@ -385,6 +392,7 @@ fn find_crossings(
         );
         s.crossings.push((p, e.from, f.from));
     }
+    true
 }
 
 /// Where edges `e` and `f` (their ends: vertex and position; no neighbours, crossing

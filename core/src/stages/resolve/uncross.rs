@@ -37,6 +37,25 @@ use crate::Error;
 /// No edge or vertex.
 const NONE: u32 = u32::MAX;
 
+/// The short way declines with more crossing points than one in this many vertices
+/// (measured: the crossing outlines of a world layer have one in 300 to 8,000 vertices,
+/// the water fixtures one in 40 to 80; crossing star polygons and overlapping strokes,
+/// one in 2 to 4, where rounding often makes relinked edges cross and strict mode
+/// refuses them).
+const DENSE: usize = 16;
+
+/// The short way declines where more than one vertex in this many lies where rings meet
+/// (a layer given at once, nearly every vertex on a neighbour's border): joining them
+/// costs strict mode more than the long way takes, as in `strict_first`.
+const SHARED: usize = 4;
+
+/// Crossing points and vertices where rings meet that the short way takes beyond those
+/// limits.
+const FEW: usize = 16;
+
+/// Pairs the crossing search may count beyond its limits on small input.
+const SMALL: usize = 256;
+
 /// The short way's buffers.
 #[derive(Debug, Default)]
 pub(crate) struct Scratch {
@@ -194,7 +213,14 @@ fn relink(
         .max(hi[1].abs());
     s.contacts.clear();
     let reach = grid.half_width(largest);
-    find_crossings(r, lo, hi, grid, reach, Some(&mut s.contacts));
+    // (a few always: small input costs little either way)
+    let (dense, shared) = (n / DENSE + FEW, n / SHARED + FEW);
+    // (the search counts a pair in every cell the two edges share: on small input,
+    // long edges share most cells)
+    let most = [4 * dense + SMALL, 2 * shared + SMALL];
+    if !find_crossings(r, lo, hi, grid, reach, Some(&mut s.contacts), most) {
+        return Ok(false);
+    }
     if r.crossings.is_empty() {
         return Ok(false);
     }
@@ -247,6 +273,12 @@ fn relink(
         } else {
             s.at_vertices.push((at, v));
         }
+    }
+    // (many points: where crossings are dense, rounding often makes relinked edges cross,
+    // and the long way would run after all; where rings meet at many vertices, joining
+    // them costs strict mode more than the long way takes)
+    if s.points.len() > dense || s.at_vertices.len() > shared {
+        return Ok(false);
     }
     // the points on each edge, in order from its start: the points met on a segment
     // have monotone coordinates, so ordering by (±x, ±y) as the edge runs orders them

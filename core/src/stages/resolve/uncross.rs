@@ -217,7 +217,7 @@ fn relink(
     let (dense, shared) = (n / DENSE + FEW, n / SHARED + FEW);
     // (the search counts a pair in every cell the two edges share: on small input,
     // long edges share most cells)
-    let most = [4 * dense + SMALL, 2 * shared + SMALL];
+    let most = [4 * dense + SMALL, shared / 2 + SMALL];
     if !find_crossings(r, lo, hi, grid, reach, Some(&mut s.contacts), most) {
         return Ok(false);
     }

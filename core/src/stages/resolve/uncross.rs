@@ -25,9 +25,12 @@
 //! the relinked rings cross anywhere, and its triangles are then exact for them.
 //!
 //! A crossing that rounds onto an end of one of its edges adds no vertex: that edge
-//! passes through the point at its vertex, and that pass is relinked with the others.
-//! The short way declines (the long way runs) where no edges cross properly (they only
-//! overlap or meet at vertices).
+//! passes through the point at its vertex, and that pass is relinked with the others; so
+//! are the passes where rings meet at a vertex (a vertex inside another edge, two
+//! vertices at one position), crossing there or not. The short way declines (the long
+//! way runs) where no edges cross properly (they only overlap or meet at vertices), where
+//! crossings are dense ([`DENSE`]) or where many vertices lie where rings meet
+//! ([`SHARED`]).
 
 use super::{bounds, find_crossings, point, typical_extent, Edge, Scratch as Resolve};
 use crate::geom::{cmp_around, in_range, Point, SnapGrid};
@@ -62,8 +65,9 @@ pub(crate) struct Scratch {
     /// Each node's successor: the input's vertices first, then the copies of the
     /// crossing points on their edges.
     next: Vec<u32>,
-    /// The crossing points (the rounded crossings, each once), each with two edges
-    /// crossing there and its output index.
+    /// The points (the rounded crossings and the positions where rings meet at
+    /// vertices, each once), each with two edges crossing there (or [`NONE`]) and its
+    /// output index.
     points: Vec<([f64; 2], u32, u32, u32)>,
     /// The points inside edges: (the edge's start vertex, the point), sorted along each
     /// edge; copy `t` is node `n + t`.
@@ -90,9 +94,9 @@ pub(crate) struct Scratch {
 
 /// Pairs the ways in and out of one point (`ends`, by angle round it, as many in as out)
 /// so that no two pairs interleave — each way in with a way out as parentheses pair, read
-/// from just after the lowest running count — and links each pair's copies: the copy of
-/// a way in goes on where the copy of its way out went. Pairs that do not interleave
-/// touch at the point without crossing.
+/// from just after the lowest running count — and links each pair's passes: the pass of
+/// a way in goes on where the pass of its way out went (`around`: each node's neighbours
+/// before relinking). Pairs that do not interleave touch at the point without crossing.
 fn relink_round(
     next: &mut [u32],
     ends: &[(Point, bool, u32)],
@@ -322,8 +326,8 @@ fn relink(
         s.around[v][1] = w;
         s.around[w as usize][0] = v as u32;
     }
-    // each point's output index: the input vertex it rounded onto (the lowest), or an
-    // added vertex
+    // each point's output index: the input vertex there (the lowest), or an added
+    // vertex
     for &(at, v) in s.at_vertices.iter().rev() {
         s.points[at as usize].3 = v;
     }

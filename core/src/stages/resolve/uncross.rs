@@ -90,6 +90,8 @@ pub(crate) struct Scratch {
     /// The ways in not yet paired with a way out ([`relink_round`]).
     open: Vec<u32>,
     seen: Vec<bool>,
+    /// The table of [`repeated_positions`].
+    table: Vec<u32>,
 }
 
 /// Pairs the ways in and out of one point (`ends`, by angle round it, as many in as out)
@@ -139,6 +141,41 @@ pub(crate) fn uncross(
     made
 }
 
+/// How many of the points `hot` repeat a point before them (found in an open-addressing
+/// table of indices by position), counted up to one past `most`.
+fn repeated_positions(table: &mut Vec<u32>, hot: &[[f64; 2]], most: usize) -> usize {
+    let size = (2 * hot.len()).next_power_of_two().max(2);
+    let bits = size.trailing_zeros();
+    table.clear();
+    table.resize(size, NONE);
+    let mut repeated = 0;
+    for (v, p) in hot.iter().enumerate() {
+        // (the bits of both coordinates mixed; equal positions, −0.0 read as +0.0 by the
+        // caller, have equal bits)
+        let mix =
+            (p[0].to_bits() ^ p[1].to_bits().rotate_left(29)).wrapping_mul(0x9e37_79b9_7f4a_7c15);
+        // (the top bits: a product's low bits see only the factors' low bits, which
+        // round coordinates leave zero)
+        let mut i = (mix >> (64 - bits)) as usize;
+        loop {
+            let w = table[i];
+            if w == NONE {
+                table[i] = v as u32;
+                break;
+            }
+            if hot[w as usize] == *p {
+                repeated += 1;
+                if repeated > most {
+                    return repeated;
+                }
+                break;
+            }
+            i = (i + 1) & (size - 1);
+        }
+    }
+    repeated
+}
+
 /// [`uncross`] with its buffers apart from the stage's.
 fn relink(
     r: &mut Resolve,
@@ -163,6 +200,12 @@ fn relink(
     r.hot.clear();
     r.hot
         .extend(vertices.iter().map(|p| [p[0] + 0.0, p[1] + 0.0]));
+    // (a layer given at once: most vertices on a neighbour's border, found before any
+    // search)
+    let shared = n / SHARED + FEW;
+    if repeated_positions(&mut s.table, &r.hot, shared) > shared {
+        return Ok(false);
+    }
     s.next.clear();
     s.next.extend(0..n as u32);
     r.edges.clear();
@@ -218,7 +261,7 @@ fn relink(
     s.contacts.clear();
     let reach = grid.half_width(largest);
     // (a few always: small input costs little either way)
-    let (dense, shared) = (n / DENSE + FEW, n / SHARED + FEW);
+    let dense = n / DENSE + FEW;
     // (the search counts a pair in every cell the two edges share: on small input,
     // long edges share most cells)
     let most = [4 * dense + SMALL, shared / 2 + SMALL];
@@ -583,6 +626,28 @@ mod tests {
             (relinked_area - area).abs() < 1e-12,
             "{relinked_area} against {area}"
         );
+    }
+
+    /// The table finds every repeat, round coordinates (whose low bits are all zero)
+    /// included, and stops counting one past the limit.
+    #[test]
+    fn repeated_positions_counts_the_repeats() {
+        let mut below = crate::testing::random(7);
+        for (cells, scale) in [(8u64, 1.0), (1000, 0.5), (40, 1e-3)] {
+            let hot: Vec<[f64; 2]> = (0..500)
+                .map(|_| [below(cells) as f64 * scale, below(cells) as f64 * scale])
+                .collect();
+            let mut sorted = hot.clone();
+            sorted.sort_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
+            sorted.dedup();
+            let repeats = hot.len() - sorted.len();
+            let mut table = Vec::new();
+            assert_eq!(repeated_positions(&mut table, &hot, usize::MAX), repeats);
+            if repeats > 3 {
+                assert_eq!(repeated_positions(&mut table, &hot, 3), 4);
+            }
+        }
+        assert_eq!(repeated_positions(&mut Vec::new(), &[], 0), 0);
     }
 
     #[test]

@@ -129,10 +129,11 @@ pub(crate) fn left_of(a: Point, b: Point, c: Point) -> bool {
     orient2d(a, b, c) == Orientation::CounterClockwise
 }
 
-/// True when p lies on the closed segment a–b (exact).
+/// True when p lies on the closed segment a–b (exact). The box first: most points
+/// tested lie outside it, and comparisons cost less than a sign.
 #[inline]
 pub(crate) fn on_segment(a: Point, b: Point, p: Point) -> bool {
-    orient2d(a, b, p) == Orientation::Collinear && within_box(a, b, p)
+    within_box(a, b, p) && orient2d(a, b, p) == Orientation::Collinear
 }
 
 /// True when p lies in the axis-aligned box spanned by a and b (comparisons only, exact).

@@ -46,7 +46,7 @@ pub(crate) use uncross::uncross;
 
 use cells::Cells;
 
-use crate::geom::{crosses, in_range, orient2d, within_box, Orientation, Point, SnapGrid};
+use crate::geom::{crosses, in_range, on_segment, Point, SnapGrid};
 use crate::report::Added;
 use crate::{Error, FillRule};
 
@@ -127,13 +127,7 @@ pub(crate) fn resolve(
     drop_cancelling_edges(s);
     s.typical = typical_extent(&s.edges, &s.hot);
     let (lo, hi) = bounds(&s.hot);
-    let reach = grid.half_width(
-        lo[0]
-            .abs()
-            .max(lo[1].abs())
-            .max(hi[0].abs())
-            .max(hi[1].abs()),
-    );
+    let reach = reach(grid, lo, hi);
     if uncrossed {
         s.crossings.clear();
     } else {
@@ -311,6 +305,18 @@ fn bounds(points: &[[f64; 2]]) -> ([f64; 2], [f64; 2]) {
     (lo, hi)
 }
 
+/// A bound on the half-width of every pixel of `grid` within the box `lo..=hi` (that of
+/// its largest coordinate).
+fn reach(grid: SnapGrid, lo: [f64; 2], hi: [f64; 2]) -> f64 {
+    grid.half_width(
+        lo[0]
+            .abs()
+            .max(lo[1].abs())
+            .max(hi[0].abs())
+            .max(hi[1].abs()),
+    )
+}
+
 fn point(p: [f64; 2]) -> Point {
     Point::new(p[0], p[1])
 }
@@ -362,20 +368,18 @@ fn find_crossings(
                 if apart {
                     continue;
                 }
+                // (the limits read only where something was found)
                 if crosses(point(a), point(b), point(c), point(d)) {
                     pairs.push((i.min(j), i.max(j)));
+                    if pairs.len() > most[0] {
+                        return false;
+                    }
                 } else if let Some(contacts) = contacts.as_deref_mut() {
-                    meet_at_vertices(
-                        contacts,
-                        [(e.a, a), (e.b, b)],
-                        e.from,
-                        [(f.a, c), (f.b, d)],
-                        f.from,
-                    );
-                }
-                let met = contacts.as_deref().map_or(0, Vec::len);
-                if pairs.len() > most[0] || met > most[1] {
-                    return false;
+                    let ends = ([(e.a, a), (e.b, b)], [(f.a, c), (f.b, d)]);
+                    meet_at_vertices(contacts, ends.0, e.from, ends.1, f.from);
+                    if contacts.len() > most[1] {
+                        return false;
+                    }
                 }
             }
         }
@@ -410,9 +414,7 @@ fn meet_at_vertices(
             if q == ends[0].1 || q == ends[1].1 {
                 // (the vertex of this edge there is pushed from the other side)
                 contacts.push((v, u32::MAX));
-            } else if within_box(a, b, point(q))
-                && orient2d(a, b, point(q)) == Orientation::Collinear
-            {
+            } else if on_segment(a, b, point(q)) {
                 contacts.push((v, from));
             }
         }
@@ -538,11 +540,7 @@ fn split_at_vertices(s: &mut Scratch, lo: [f64; 2], hi: [f64; 2], reach: f64) {
         frame.along(pa, pb, pad, |c| {
             for &q in s.cells.cell(c) {
                 let pq = s.hot[q as usize];
-                if q != a
-                    && q != b
-                    && within_box(point(pa), point(pb), point(pq))
-                    && orient2d(point(pa), point(pb), point(pq)) == Orientation::Collinear
-                {
+                if q != a && q != b && on_segment(point(pa), point(pb), point(pq)) {
                     s.on_edge.push(q);
                 }
             }

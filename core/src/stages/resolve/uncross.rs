@@ -32,7 +32,7 @@
 //! crossings are dense ([`DENSE`]) or where many vertices lie where rings meet
 //! ([`SHARED`]).
 
-use super::{bounds, find_crossings, point, typical_extent, Edge, Scratch as Resolve};
+use super::{bounds, find_crossings, point, reach, typical_extent, Edge, Scratch as Resolve};
 use crate::geom::{cmp_around, in_range, Point, SnapGrid};
 use crate::report::Added;
 use crate::Error;
@@ -253,13 +253,8 @@ fn relink(
     }
     r.typical = typical_extent(&r.edges, &r.hot);
     let (lo, hi) = bounds(&r.hot);
-    let largest = lo[0]
-        .abs()
-        .max(lo[1].abs())
-        .max(hi[0].abs())
-        .max(hi[1].abs());
     s.contacts.clear();
-    let reach = grid.half_width(largest);
+    let reach = reach(grid, lo, hi);
     // (a few always: small input costs little either way)
     let dense = n / DENSE + FEW;
     // (the search counts a pair in every cell the two edges share: on small input,

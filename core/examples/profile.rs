@@ -14,7 +14,7 @@ fn main() {
     let args: Vec<String> = std::env::args().collect();
     let path = args
         .get(1)
-        .expect("usage: profile FILE [RUNS] [fast|lenient|quality|check]");
+        .expect("usage: profile FILE [RUNS] [fast|lenient|quality|check|threads:N|[seidel-]RULE]");
     let runs: usize = args.get(2).map_or(100, |r| r.parse().expect("RUNS"));
     let mode = args.get(3).map_or("lenient", String::as_str);
     let nesting = match args.get(4).map_or("first", String::as_str) {
@@ -52,9 +52,22 @@ fn main() {
         _ if threads.is_some() => options.with_threads(threads.unwrap_or(1)),
         "lenient" => options.with_lenient(true),
         "quality" => options.with_strategy(Strategy::Quality),
-        "even-odd" => options.with_fill_rule(polytri::FillRule::EvenOdd),
-        "nonzero" => options.with_fill_rule(polytri::FillRule::NonZero),
-        other => panic!("unknown mode {other}"),
+        // a fill rule by name, through Seidel's trapezoidation with `seidel-` before it
+        other => {
+            let (options, rule) = match other.strip_prefix("seidel-") {
+                Some(rule) => (options.with_strategy(Strategy::Seidel), rule),
+                None => (options, other),
+            };
+            let rule = match rule {
+                "even-odd" => polytri::FillRule::EvenOdd,
+                "nonzero" => polytri::FillRule::NonZero,
+                "positive" => polytri::FillRule::Positive,
+                "negative" => polytri::FillRule::Negative,
+                "abs-geq-two" => polytri::FillRule::AbsGeqTwo,
+                _ => panic!("unknown mode {other}"),
+            };
+            options.with_fill_rule(rule)
+        }
     };
     let mut tri = Triangulator::<f64>::new();
     tri.set_small_rings(std::env::var_os("NO_SMALL").is_none());

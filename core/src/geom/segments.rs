@@ -5,8 +5,9 @@ use core::cmp::Ordering;
 
 use super::predicates::{greatest, least, orient2d, within_box, Orientation, Point};
 
-/// Whether segments a–b and c–d cross at a point interior to both.
-#[inline]
+/// Whether segments a–b and c–d cross at a point interior to both. (Always inlined: the
+/// crossing searches call it for every pair of overlapping boxes.)
+#[inline(always)]
 pub(crate) fn crosses(a: Point, b: Point, c: Point, d: Point) -> bool {
     use Orientation::*;
     if boxes_apart(a, b, c, d) {

@@ -63,7 +63,7 @@ pub(crate) fn triangulate<T: Coord>(
         options.strategy,
         out,
     );
-    let crossed = matches!(tried, Strict::Crossed);
+    let mut crossed = matches!(tried, Strict::Crossed);
     let uncrossed = match tried {
         Strict::Made(made) => {
             cx.added.clear();
@@ -82,7 +82,11 @@ pub(crate) fn triangulate<T: Coord>(
             cx.reset(false);
             cx.probe = true;
             load::load(cx, vertices, ring_starts)?;
-            clean::clean(cx, &mut st.clean, false).is_ok() && !cx.hidden_unchecked
+            let cleaned = clean::clean(cx, &mut st.clean, false);
+            // (abs ≥ 2, which strict mode never reads as the rule does, crossing: the
+            // short way)
+            crossed = matches!(cleaned, Err(Error::EdgesCross { .. }));
+            cleaned.is_ok() && !cx.hidden_unchecked
         }
     };
     out.clear();
@@ -92,17 +96,25 @@ pub(crate) fn triangulate<T: Coord>(
     let grid = SnapGrid { f32: T::IS_F32 };
     let mut added = core::mem::take(&mut cx.added);
     added.clear();
-    // even–odd where edges only cross: the crossings relinked, if strict mode takes that
-    if crossed && rule == FillRule::EvenOdd && options.strategy != Strategy::Seidel {
-        let made = relinked(cx, st, re, fs, ring_starts, grid, options, &mut added, out);
+    // where edges only cross: the short way (crossings split and relinked), if it takes
+    // the input
+    if crossed {
+        let made = short_way(
+            cx,
+            st,
+            re,
+            fs,
+            vertices,
+            ring_starts,
+            grid,
+            rule,
+            options,
+            &mut added,
+            out,
+        );
         match made {
             Ok(Some(made)) => {
                 cx.added = added;
-                let map = &fs.resolve.map;
-                for v in out.iter_mut().flatten() {
-                    *v = map[*v as usize];
-                }
-                report_unused_input(&mut cx.dropped, fs, vertices, ring_starts, out);
                 return Ok(made);
             }
             Ok(None) => {
@@ -128,68 +140,105 @@ pub(crate) fn triangulate<T: Coord>(
         cx.added = added;
         return Err(e);
     }
-    let r = &fs.resolve;
-    if options.strategy == Strategy::Seidel {
-        cx.added = added;
-        let (ids, starts) = (&r.ring_ids, &r.ring_starts);
-        seidel::triangulate(&mut fs.seidel, &r.hot, starts, ids, SEIDEL_SEED, out)?;
-        for t in out.iter_mut() {
-            for v in t.iter_mut() {
-                *v = r.hot_out[*v as usize];
-            }
-        }
-        report_unused(&mut cx.dropped, &mut fs.used, r, ring_starts, out);
-        let (polygons, holes) = count_rings(&r.hot, starts, ids);
-        return Ok(Outcome {
-            polygons,
-            holes,
-            deviation: 0.0,
-        });
-    }
-    // valid rings: strict, containment decides
-    let strict = Options::new()
-        .with_strategy(options.strategy)
-        .with_nesting(Nesting::Auto);
-    let made = lenient::triangulate(cx, st, re, &r.rings, &r.ring_starts, &strict, out);
+    let made = triangulate_resolved(cx, st, re, fs, ring_starts, options.strategy, out);
     cx.added = added;
-    let made = made.map_err(|e| match e {
+    made.map_err(|e| match e {
         Error::TooManyVertices { .. } => e,
         _ => Error::Internal { stage: "resolve" },
-    })?;
-    for t in out.iter_mut() {
-        for v in t.iter_mut() {
-            *v = r.map[*v as usize];
-        }
-    }
-    // the vertices the pipeline left out are the resolved rings', not the input's
-    report_unused(&mut cx.dropped, &mut fs.used, r, ring_starts, out);
-    Ok(made)
+    })
 }
 
-/// The even–odd rule's short way where edges cross ([`resolve::uncross`]): the crossings
-/// relinked into rings that touch there, triangulated by strict mode, into `out` with the
-/// rings' vertices (not yet the output's: `fs.resolve.map` maps them). `None` where the
-/// short way declines or strict mode refuses the rings (then `resolve` decides).
-#[allow(clippy::too_many_arguments)] // the call's input, its state and its output
-fn relinked(
+/// Triangulates the rings `resolve` left in `fs.resolve` (valid, bounding the rule's
+/// region) by `strategy`, into `out` as output indices, and reports the input vertices
+/// no triangle uses.
+fn triangulate_resolved(
     cx: &mut Context,
     st: &mut Stages,
     re: &mut Reruns,
     fs: &mut Scratch,
     ring_starts: &[usize],
+    strategy: Strategy,
+    out: &mut Vec<[u32; 3]>,
+) -> Result<Outcome, Error> {
+    let r = &fs.resolve;
+    let made = if strategy == Strategy::Seidel {
+        let (ids, starts) = (&r.ring_ids, &r.ring_starts);
+        seidel::triangulate(&mut fs.seidel, &r.hot, starts, ids, SEIDEL_SEED, out)?;
+        for v in out.iter_mut().flatten() {
+            *v = r.hot_out[*v as usize];
+        }
+        let (polygons, holes) = count_rings(&r.hot, starts, ids);
+        Outcome {
+            polygons,
+            holes,
+            deviation: 0.0,
+        }
+    } else {
+        // valid rings: strict, containment decides
+        let strict = Options::new()
+            .with_strategy(strategy)
+            .with_nesting(Nesting::Auto);
+        let made = lenient::triangulate(cx, st, re, &r.rings, &r.ring_starts, &strict, out)?;
+        for v in out.iter_mut().flatten() {
+            *v = r.map[*v as usize];
+        }
+        made
+    };
+    // the vertices the pipeline left out are the resolved rings', not the input's
+    report_unused(&mut cx.dropped, &mut fs.used, r, ring_starts, out);
+    Ok(made)
+}
+
+/// The short way where edges cross ([`resolve::uncross`]): the crossings rounded and
+/// both edges split there. By even–odd (ear clipping), the split rings relinked at each
+/// crossing to touch there and triangulated by strict mode; where strict mode refuses
+/// them, and for the other rules and Seidel, the rings bounding the rule's region of the
+/// split edges, as `resolve` traces them. The triangles into `out` (output indices), the
+/// added vertices into `added`; `None` where the short way declines or the split edges
+/// meet other than at their ends (then `resolve` decides).
+#[allow(clippy::too_many_arguments)] // the call's input, its state and its output
+fn short_way<T: Coord>(
+    cx: &mut Context,
+    st: &mut Stages,
+    re: &mut Reruns,
+    fs: &mut Scratch,
+    vertices: &[[T; 2]],
+    ring_starts: &[usize],
     grid: SnapGrid,
+    rule: FillRule,
     options: &Options,
     added: &mut Vec<Added>,
     out: &mut Vec<[u32; 3]>,
 ) -> Result<Option<Outcome>, Error> {
-    if !resolve::uncross(&mut fs.resolve, &fs.vertices, ring_starts, grid, added)? {
+    let relinking = rule == FillRule::EvenOdd && options.strategy != Strategy::Seidel;
+    let way = (!relinking).then_some(rule);
+    if !resolve::uncross(&mut fs.resolve, &fs.vertices, ring_starts, grid, added, way)? {
         return Ok(None);
     }
-    let r = &fs.resolve;
-    let strict = Options::new()
-        .with_strategy(options.strategy)
-        .with_nesting(Nesting::Auto);
-    Ok(lenient::triangulate(cx, st, re, &r.rings, &r.ring_starts, &strict, out).ok())
+    if relinking {
+        let r = &fs.resolve;
+        let strict = Options::new()
+            .with_strategy(options.strategy)
+            .with_nesting(Nesting::Auto);
+        match lenient::triangulate(cx, st, re, &r.rings, &r.ring_starts, &strict, out) {
+            Ok(made) => {
+                for v in out.iter_mut().flatten() {
+                    *v = r.map[*v as usize];
+                }
+                report_unused_input(&mut cx.dropped, fs, vertices, ring_starts, out);
+                return Ok(Some(made));
+            }
+            // (split edges that cross, which rounding made: the winding sweep would
+            // find them too)
+            Err(Error::EdgesCross { .. }) => return Ok(None),
+            Err(_) => {}
+        }
+        out.clear();
+        if !resolve::rewind(&mut fs.resolve, rule) {
+            return Ok(None);
+        }
+    }
+    Ok(triangulate_resolved(cx, st, re, fs, ring_starts, options.strategy, out).ok())
 }
 
 /// The input vertices no triangle uses, and why, into `dropped`: another vertex at the

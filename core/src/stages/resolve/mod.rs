@@ -42,7 +42,7 @@ mod trace;
 mod uncross;
 mod winding;
 
-pub(crate) use uncross::uncross;
+pub(crate) use uncross::{rewind, uncross};
 
 use cells::Cells;
 
@@ -131,7 +131,7 @@ pub(crate) fn resolve(
     if uncrossed {
         s.crossings.clear();
     } else {
-        find_crossings(s, lo, hi, grid, reach, None, [usize::MAX; 2]);
+        find_crossings(s, lo, hi, grid, reach, None, [usize::MAX; 3]);
     }
     add_crossings(s, vertices.len(), added)?;
     if s.crossings.is_empty() {
@@ -144,8 +144,14 @@ pub(crate) fn resolve(
     }
     split_at_vertices(s, lo, hi, reach);
     merge_fragments(&mut s.fragments);
-    winding::boundary(&mut s.winding, &s.hot, &s.fragments, rule);
+    winding::boundary(&mut s.winding, &s.hot, &s.fragments, rule, false);
     trace::rings(&mut s.trace, &s.hot, &s.winding.boundary)?;
+    take_traced(s);
+    Ok(())
+}
+
+/// The traced rings as the result: their positions, points, starts and output indices.
+fn take_traced(s: &mut Scratch) {
     for ring in s.trace.rings() {
         s.ring_starts.push(s.rings.len());
         for &h in ring {
@@ -154,7 +160,6 @@ pub(crate) fn resolve(
             s.map.push(s.hot_out[h as usize]);
         }
     }
-    Ok(())
 }
 
 /// The input's distinct positions, sorted, each with the lowest input index there.
@@ -191,6 +196,11 @@ fn ordered_bits(x: f64) -> u64 {
     } else {
         !bits
     }
+}
+
+/// The number whose [`ordered_bits`] are `k`.
+fn unordered_bits(k: u64) -> f64 {
+    f64::from_bits(if k >> 63 == 1 { k & !(1 << 63) } else { !k })
 }
 
 /// Every ring's edges between distinct positions.
@@ -326,7 +336,8 @@ fn point(p: [f64; 2]) -> Point {
 /// vertex lying inside another edge, as (vertex, that edge's start), and each two
 /// vertices at one position, each as (vertex, `u32::MAX`). Stops, returning false, once
 /// more than `most[0]` crossing pairs or `most[1]` contacts are found (counted in every
-/// cell two edges share, so up to a few times each).
+/// cell two edges share, so up to a few times each), or more than `most[2]` distinct
+/// crossing pairs.
 fn find_crossings(
     s: &mut Scratch,
     lo: [f64; 2],
@@ -334,7 +345,7 @@ fn find_crossings(
     grid: SnapGrid,
     reach: f64,
     mut contacts: Option<&mut Vec<(u32, u32)>>,
-    most: [usize; 2],
+    most: [usize; 3],
 ) -> bool {
     s.crossings.clear();
     s.cells.reset(lo, hi, s.edges.len(), 8.0 * reach, s.typical);
@@ -386,6 +397,10 @@ fn find_crossings(
     }
     pairs.sort_unstable();
     pairs.dedup();
+    // (before the rounding, which costs more than the search)
+    if pairs.len() > most[2] {
+        return false;
+    }
     for &(i, j) in pairs.iter() {
         let (e, f) = (edges[i as usize], edges[j as usize]);
         let p = grid.crossing(

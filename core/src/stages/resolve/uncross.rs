@@ -1,18 +1,21 @@
-//! The even–odd rule's short way, for rings whose edges only cross each other properly (a
-//! simplified border looping over itself, a bow tie): each crossing is rounded to the
-//! grid, both edges are split there, and the two passes through the point are relinked
-//! so that they touch instead of crossing. The rings then neither cross nor change their
-//! even–odd region (beyond the rounding), and the usual pipeline, strict, triangulates
-//! them; where it refuses them, the caller resolves the input the long way
-//! ([`super::resolve`]).
+//! The short way for rings whose edges only cross each other properly (a simplified
+//! border looping over itself, a bow tie): each crossing is rounded to the grid and both
+//! edges are split there. Then, by even–odd, the passes through each point are relinked
+//! so that they touch instead of crossing ([`relink`]): the rings then neither cross nor
+//! change their even–odd region (beyond the rounding), and the usual pipeline, strict,
+//! triangulates them. By the other rules (or where strict mode refuses the relinked
+//! rings), the split edges go to the long way's winding sweep and tracing as they are
+//! ([`wind`]), the sweep proving that they meet only at their ends. Where it finds
+//! otherwise, or strict mode refuses the rings, the caller resolves the input the long
+//! way ([`super::resolve`]).
 //!
-//! **Why the region stays.** A point's even–odd parity is the parity of the edges a ray
-//! from it crosses: it depends on the set of edges, not on how they are linked into
-//! rings. Splitting edge a–b at the rounded crossing p′ replaces a–b by a–p′–b: the
-//! parity changes only inside the thin triangle a, b, p′, whose height is the rounding
-//! (less than a pixel's diagonal). Relinking changes no edge. So the relinked rings'
-//! even–odd region is the input's up to those triangles, the same allowance as snap
-//! rounding's.
+//! **Why the region stays.** A point's winding number is the signed count of the edges
+//! a ray from it crosses, and its even–odd parity the count's parity: they depend on the
+//! set of directed edges, not on how they are linked into rings. Splitting edge a–b at
+//! the rounded crossing p′ replaces a–b by a–p′–b: winding numbers change only inside the
+//! thin triangle a, b, p′, whose height is the rounding (less than a pixel's diagonal).
+//! Relinking changes no edge. So the rings' region is the input's up to those
+//! triangles, the same allowance as snap rounding's.
 //!
 //! **Why they do not cross.** Where a → p → b crosses c → p → d, the four directions
 //! round p alternate between the two lines (a, c, b, d or a, d, b, c); the relinked passes
@@ -22,20 +25,24 @@
 //! interleave. That holds for exact crossings; a rounded point may upset it (or make a
 //! split edge pass on the other side of a vertex) where edges come within a pixel of each
 //! other. Nothing here relies on it: the pipeline's strict check decides exactly whether
-//! the relinked rings cross anywhere, and its triangles are then exact for them.
+//! the relinked rings cross anywhere, and its triangles are then exact for them; the
+//! winding sweep proves the split edges planar before it counts.
 //!
 //! A crossing that rounds onto an end of one of its edges adds no vertex: that edge
 //! passes through the point at its vertex, and that pass is relinked with the others; so
 //! are the passes where rings meet at a vertex (a vertex inside another edge, two
-//! vertices at one position), crossing there or not. The short way declines (the long
-//! way runs) where no edges cross properly (they only overlap or meet at vertices), where
-//! crossings are dense ([`DENSE`]) or where many vertices lie where rings meet
-//! ([`SHARED`]).
+//! vertices at one position, a crossing rounded onto a vertex), crossing there or not. The
+//! short way declines (the long way runs) where no edges cross properly (they only
+//! overlap or meet at vertices), where crossings are dense ([`DENSE`]) or where many
+//! vertices lie where rings meet ([`SHARED`]).
 
-use super::{bounds, find_crossings, point, reach, typical_extent, Edge, Scratch as Resolve};
-use crate::geom::{cmp_around, in_range, Point, SnapGrid};
+use super::{
+    bounds, find_crossings, ordered_bits, point, reach, typical_extent, unordered_bits, Edge,
+    Scratch as Resolve,
+};
+use crate::geom::{cmp_around, in_range, on_ray, within_box, Point, SnapGrid};
 use crate::report::Added;
-use crate::Error;
+use crate::{Error, FillRule};
 
 /// No edge or vertex.
 const NONE: u32 = u32::MAX;
@@ -92,6 +99,15 @@ pub(crate) struct Scratch {
     seen: Vec<bool>,
     /// The table of [`repeated_positions`].
     table: Vec<u32>,
+    /// The input's vertex count (nodes from it on are copies).
+    n: usize,
+    /// Every node's position as sorting keys, its output index and the node, sorted
+    /// ([`wind`]); then each position once.
+    spots: Vec<([u64; 2], u32, u32)>,
+    /// Each node's position among them.
+    spot: Vec<u32>,
+    /// Per position: whether several nodes lie there.
+    many: Vec<bool>,
 }
 
 /// Pairs the ways in and out of one point (`ends`, by angle round it, as many in as out)
@@ -128,15 +144,59 @@ fn relink_round(
 /// ring position's output index: an input vertex's own, or an added vertex's, pushed to
 /// `added`). `Ok(false)` where the short way declines; `r`'s rings are empty then and
 /// `added` is as it was.
+///
+/// With `rule`, the rings are instead those bounding the rule's region of the split
+/// edges, as the long way traces them ([`rewind`]).
 pub(crate) fn uncross(
     r: &mut Resolve,
     vertices: &[[f64; 2]],
     ring_starts: &[usize],
     grid: SnapGrid,
     added: &mut Vec<Added>,
+    rule: Option<FillRule>,
 ) -> Result<bool, Error> {
     let mut s = core::mem::take(&mut r.uncross);
-    let made = relink(r, &mut s, vertices, ring_starts, grid, added);
+    let before = added.len();
+    let made = split(
+        r,
+        &mut s,
+        vertices,
+        ring_starts,
+        grid,
+        added,
+        rule.is_some(),
+    );
+    let made = made.map(|split| {
+        split
+            && match rule {
+                None => {
+                    relink(r, &mut s);
+                    true
+                }
+                Some(rule) => wind(r, &mut s, rule),
+            }
+    });
+    if made == Ok(false) {
+        added.truncate(before);
+    }
+    r.uncross = s;
+    made
+}
+
+/// After [`uncross`] relinked the rings (no rule) and strict mode refused them (edges
+/// along each other, or rounding that made relinked edges cross): the rings bounding
+/// `rule`'s region of the same split edges instead, into `r` as the long way leaves its
+/// rings (`hot`, `hot_out`, `vertex_hot`, the rings and `map`). False where the split
+/// edges meet other than at their ends; then only the long way can round them.
+///
+/// The region is the rule's region of the input up to the rounding, for every rule, by
+/// the argument of the module docs: splitting moves the edges only within thin triangles,
+/// and a point's winding number depends on the directed edges, not on their linking.
+/// The sweep that counts the winding numbers ([`super::winding`]) proves the split edges
+/// planar first.
+pub(crate) fn rewind(r: &mut Resolve, rule: FillRule) -> bool {
+    let mut s = core::mem::take(&mut r.uncross);
+    let made = wind(r, &mut s, rule);
     r.uncross = s;
     made
 }
@@ -176,20 +236,53 @@ fn repeated_positions(table: &mut Vec<u32>, hot: &[[f64; 2]], most: usize) -> us
     repeated
 }
 
-/// [`uncross`] with its buffers apart from the stage's.
-fn relink(
+/// Where a ring turns back along its last edge (a spike, which the crossing search
+/// does not compare with its neighbour), the nearer of the two far ends lies on the other
+/// edge: a contact, so that the two edges split into pieces that run between the same
+/// points ([`wind`] then merges them).
+fn spike_contacts(r: &Resolve, s: &mut Scratch) {
+    let (hot, next) = (&r.hot, &s.next);
+    for a in 0..next.len() {
+        let b = next[a] as usize;
+        let c = next[b] as usize;
+        if b == a || c == a {
+            continue;
+        }
+        let [pa, pb, pc] = [a, b, c].map(|v| point(hot[v]));
+        // (back along a → b: c on the ray from b through a)
+        if !on_ray(pb, pa, pc) {
+            continue;
+        }
+        if pa == pc {
+            s.contacts.push((a as u32, NONE));
+            s.contacts.push((c as u32, NONE));
+        } else if within_box(pa, pb, pc) {
+            s.contacts.push((c as u32, a as u32));
+        } else {
+            s.contacts.push((a as u32, b as u32));
+        }
+    }
+}
+
+/// [`uncross`] up to the split edges (`s.around`, each node's neighbours), with its
+/// buffers apart from the stage's: false where the short way declines. With `spikes`,
+/// the edges of spikes are split where they run along each other
+/// ([`spike_contacts`]).
+fn split(
     r: &mut Resolve,
     s: &mut Scratch,
     vertices: &[[f64; 2]],
     ring_starts: &[usize],
     grid: SnapGrid,
     added: &mut Vec<Added>,
+    spikes: bool,
 ) -> Result<bool, Error> {
     r.rings.clear();
     r.ring_ids.clear();
     r.ring_starts.clear();
     r.map.clear();
     let n = vertices.len();
+    s.n = n;
     let in_grid = |p: &[f64; 2]| in_range(p[0]) && in_range(p[1]);
     if n == 0 || u32::try_from(n).is_err() || !vertices.iter().all(in_grid) {
         return Ok(false);
@@ -259,12 +352,15 @@ fn relink(
     let dense = n / DENSE + FEW;
     // (the search counts a pair in every cell the two edges share: on small input,
     // long edges share most cells)
-    let most = [4 * dense + SMALL, shared / 2 + SMALL];
+    let most = [4 * dense + SMALL, shared / 2 + SMALL, 2 * dense];
     if !find_crossings(r, lo, hi, grid, reach, Some(&mut s.contacts), most) {
         return Ok(false);
     }
     if r.crossings.is_empty() {
         return Ok(false);
+    }
+    if spikes {
+        spike_contacts(r, s);
     }
     let order = |x: &[f64; 2], y: &[f64; 2]| x[0].total_cmp(&y[0]).then(x[1].total_cmp(&y[1]));
     r.crossings.sort_unstable_by(|x, y| order(&x.0, &y.0));
@@ -382,16 +478,33 @@ fn relink(
             point.3 = vertex;
         }
     }
-    // at each point, the passes through it (copies and vertices) relinked so that they
-    // touch
-    let position = |v: u32| {
-        if v < base {
-            hot[v as usize]
-        } else {
-            s.points[s.on_edges[(v - base) as usize].1 as usize].0
-        }
-    };
+    Ok(true)
+}
+
+/// The position of node `v` (an input vertex, or a copy of a point) once split.
+fn position(r: &Resolve, s: &Scratch, v: u32) -> [f64; 2] {
+    if (v as usize) < s.n {
+        r.hot[v as usize]
+    } else {
+        s.points[s.on_edges[v as usize - s.n].1 as usize].0
+    }
+}
+
+/// The output index of node `v`: an input vertex's own, or its point's.
+fn output(s: &Scratch, v: u32) -> u32 {
+    if (v as usize) < s.n {
+        v
+    } else {
+        s.points[s.on_edges[v as usize - s.n].1 as usize].3
+    }
+}
+
+/// The even–odd rings of the split edges: at each point, the passes through it (copies
+/// and vertices) relinked so that they touch; then the cycles, into `r.rings`,
+/// `r.ring_starts` and `r.map`.
+fn relink(r: &mut Resolve, s: &mut Scratch) {
     s.by_point.clear();
+    let base = s.n as u32;
     let copies = (0..s.on_edges.len() as u32).map(|t| (s.on_edges[t as usize].1, base + t));
     s.by_point
         .extend(copies.chain(s.at_vertices.iter().copied()));
@@ -402,8 +515,8 @@ fn relink(
         s.ends.clear();
         for &(_, v) in group {
             let [before, after] = s.around[v as usize];
-            s.ends.push((point(position(before)), true, v));
-            s.ends.push((point(position(after)), false, v));
+            s.ends.push((point(position(r, s, before)), true, v));
+            s.ends.push((point(position(r, s, after)), false, v));
         }
         s.ends.sort_by(|x, y| cmp_around(o, x.0, y.0));
         relink_round(&mut s.next, &s.ends, &s.around, &mut s.open);
@@ -421,18 +534,96 @@ fn relink(
         let mut v = start;
         while !s.seen[v] {
             s.seen[v] = true;
-            let (position, id) = if v < n {
-                (hot[v], v as u32)
-            } else {
-                let c = s.on_edges[v - n].1 as usize;
-                (s.points[c].0, s.points[c].3)
-            };
-            r.rings.push(position);
-            r.map.push(id);
+            r.rings.push(position(r, s, v as u32));
+            r.map.push(output(s, v as u32));
             v = s.next[v] as usize;
         }
     }
-    Ok(true)
+}
+
+/// [`rewind`] with the stage's buffers apart.
+fn wind(r: &mut Resolve, s: &mut Scratch, rule: FillRule) -> bool {
+    // every linked node's position once (sorted: x, then y), named by the lowest output
+    // index there (an input vertex's before an added one's); a vertex left out (a
+    // repeat, or a ring of one position) is no point of the edges
+    let nodes = s.around.len();
+    let key = |p: [f64; 2]| [ordered_bits(p[0]), ordered_bits(p[1])];
+    s.spots.clear();
+    for v in (0..nodes as u32).filter(|&v| s.around[v as usize][1] != v) {
+        s.spots.push((key(position(r, s, v)), output(s, v), v));
+    }
+    s.spots.sort_unstable();
+    s.spot.clear();
+    s.spot.resize(nodes, NONE);
+    s.many.clear();
+    let mut last = None;
+    let mut points = 0;
+    for k in 0..s.spots.len() {
+        let (key, out, v) = s.spots[k];
+        if last != Some(key) {
+            last = Some(key);
+            s.spots[points] = (key, out, v);
+            s.many.push(false);
+            points += 1;
+        } else {
+            s.many[points - 1] = true;
+        }
+        s.spot[v as usize] = (points - 1) as u32;
+    }
+    s.spots.truncate(points);
+    // the split edges between distinct points, merged where several join two points:
+    // only an edge whose ends are both held by several nodes, or lie on a spike's two
+    // sides, can have a twin (at an end held by one node, the edge's only company is the
+    // pass's other edge), so only those are sorted
+    r.fragments.clear();
+    r.split.clear();
+    for v in 0..nodes {
+        let [u, w] = s.around[v].map(|x| x as usize);
+        let (a, b) = (s.spot[v], s.spot[w]);
+        if w == v || a == b {
+            continue;
+        }
+        let x = s.around[w][1] as usize;
+        let twin_at_a = s.many[a as usize] || s.spot[u] == b;
+        let twin_at_b = s.many[b as usize] || s.spot[x] == a;
+        if twin_at_a && twin_at_b {
+            r.split.push((a, b, 1));
+        } else {
+            r.fragments.push((a, b, 1));
+        }
+    }
+    super::merge_fragments(&mut r.split);
+    r.fragments.extend_from_slice(&r.split);
+    // (each input vertex's point, a vertex left out the one at its position, if any)
+    r.vertex_hot.clear();
+    for v in 0..s.n {
+        let at = match s.spot[v] {
+            NONE => (s.spots.binary_search_by(|spot| spot.0.cmp(&key(r.hot[v]))))
+                .map_or(NONE, |k| k as u32),
+            spot => spot,
+        };
+        r.vertex_hot.push(at);
+    }
+    // the points (the input's positions read: `r.hot` takes them)
+    r.hot.clear();
+    r.hot
+        .extend(s.spots.iter().map(|(key, _, _)| key.map(unordered_bits)));
+    r.hot_out.clear();
+    r.hot_out.extend(s.spots.iter().map(|&(_, out, _)| out));
+    r.rings.clear();
+    r.ring_ids.clear();
+    r.ring_starts.clear();
+    r.map.clear();
+    if !super::winding::boundary(&mut r.winding, &r.hot, &r.fragments, rule, true) {
+        return false;
+    }
+    // (planar edges, each directed with the region on its left: the tracer links them)
+    let traced = super::trace::rings(&mut r.trace, &r.hot, &r.winding.boundary);
+    debug_assert!(traced.is_ok(), "the winding sweep proved the edges planar");
+    traced.is_ok() && {
+        super::take_traced(r);
+        true
+    }
 }
 
 #[cfg(test)]
@@ -444,14 +635,24 @@ mod tests {
 
     /// The relinked rings of `rings`, and the vertices added.
     fn relinked(rings: &[Vec<[f64; 2]>]) -> Option<(Rings, Vec<Added>)> {
+        uncrossed(rings, None)
+    }
+
+    /// [`uncross`]'s rings of `rings` (relinked, or by `rule`), and the vertices added.
+    fn uncrossed(rings: &[Vec<[f64; 2]>], rule: Option<FillRule>) -> Option<(Rings, Vec<Added>)> {
         let (vertices, starts) = flat(rings);
         let mut r = Resolve::default();
         let mut added = Vec::new();
         let grid = SnapGrid { f32: false };
-        if !uncross(&mut r, &vertices, &starts, grid, &mut added).unwrap() {
+        if !uncross(&mut r, &vertices, &starts, grid, &mut added, rule).unwrap() {
             assert!(added.is_empty() && r.rings.is_empty());
             return None;
         }
+        Some((rings_of(&r, &vertices, &added), added))
+    }
+
+    /// `r`'s rings as lists of positions, each checked against its output index.
+    fn rings_of(r: &Resolve, vertices: &[[f64; 2]], added: &[Added]) -> Rings {
         let ends = r.ring_starts.iter().skip(1).copied().chain([r.rings.len()]);
         let out = (r.ring_starts.iter().zip(ends))
             .map(|(&a, b)| r.rings[a..b].to_vec())
@@ -465,7 +666,7 @@ mod tests {
             };
             assert_eq!(*p, at);
         }
-        Some((out, added))
+        out
     }
 
     fn flat(rings: &[Vec<[f64; 2]>]) -> (Vec<[f64; 2]>, Vec<usize>) {
@@ -476,22 +677,29 @@ mod tests {
     /// The even–odd area of `rings` and the vertices added, the long way
     /// ([`super::super::resolve`]).
     fn even_odd(rings: &[Vec<[f64; 2]>]) -> (f64, usize) {
+        long_way(rings, FillRule::EvenOdd)
+    }
+
+    /// The area of `rule`'s region of `rings` and the vertices added, the long way.
+    fn long_way(rings: &[Vec<[f64; 2]>], rule: FillRule) -> (f64, usize) {
         let (vertices, starts) = flat(rings);
         let mut r = Resolve::default();
         let mut added = Vec::new();
         let grid = SnapGrid { f32: false };
-        let rule = FillRule::EvenOdd;
         super::super::resolve(&mut r, &vertices, &starts, rule, grid, false, &mut added).unwrap();
+        (signed_area(&rings_of(&r, &vertices, &added)), added.len())
+    }
+
+    /// The sum of the rings' signed areas (shoelace).
+    fn signed_area(rings: &[Vec<[f64; 2]>]) -> f64 {
         let mut twice = 0.0;
-        let ends = r.ring_starts.iter().skip(1).copied().chain([r.rings.len()]);
-        for (&a, b) in r.ring_starts.iter().zip(ends) {
-            let ring = &r.rings[a..b];
+        for ring in rings {
             for (j, p) in ring.iter().enumerate() {
                 let q = ring[(j + 1) % ring.len()];
                 twice += p[0] * q[1] - p[1] * q[0];
             }
         }
-        (twice / 2.0, added.len())
+        twice / 2.0
     }
 
     /// Strict mode's check passes on `rings` (no crossing, also not at a vertex they
@@ -507,10 +715,9 @@ mod tests {
         vec![[x, y], [x + side, y], [x + side, y + side], [x, y + side]]
     }
 
-    /// Crossings whose points are exact (no rounding): the relinked rings cross nowhere
-    /// (the long way adds no vertex to them) and have the input's even–odd region.
-    #[test]
-    fn relinked_rings_touch_where_the_input_crossed_and_keep_its_region() {
+    /// Inputs whose crossings are exact (no rounding), each with its number of
+    /// crossing points.
+    fn exact_crossings() -> Vec<(&'static str, Rings, usize)> {
         let bow_tie = vec![[0.0, 0.0], [2.0, 2.0], [2.0, 0.0], [0.0, 2.0]];
         // a ring crossing itself twice, the way a simplified border does
         let loop_over = vec![
@@ -534,7 +741,7 @@ mod tests {
         // (3, 0); a ring touching a square's corner (4, 4) and crossing two of its sides
         let through_vertex = vec![[1.0, -1.0], [2.0, 0.0], [3.0, 1.0], [3.0, -1.0]];
         let at_corner = vec![[2.0, 5.0], [4.0, 4.0], [6.0, 5.0], [5.0, 1.0]];
-        let cases: [(&str, Rings, usize); 7] = [
+        vec![
             ("three edges through one point", vec![asterisk], 1),
             (
                 "a ring crossing an edge at its vertex",
@@ -558,8 +765,38 @@ mod tests {
                 2,
             ),
             ("a ring looping over itself", vec![loop_over], 2),
-        ];
-        for (name, rings, crossings) in cases {
+            // rings running the same way round a shared part (winding 2 there), and
+            // opposite ways (winding 0 there)
+            (
+                "overlapping squares, one reversed",
+                vec![square(0.0, 0.0, 2.0), reversed(square(1.0, 1.0, 2.0))],
+                2,
+            ),
+            (
+                "a square crossing a ring wound twice",
+                vec![
+                    [square(0.0, 0.0, 4.0), square(0.0, 0.0, 4.0)].concat(),
+                    square(3.0, 1.0, 2.0),
+                ],
+                2,
+            ),
+        ]
+    }
+
+    fn reversed(mut ring: Vec<[f64; 2]>) -> Vec<[f64; 2]> {
+        ring.reverse();
+        ring
+    }
+
+    /// Crossings whose points are exact (no rounding): the relinked rings cross nowhere
+    /// (the long way adds no vertex to them) and have the input's even–odd region.
+    #[test]
+    fn relinked_rings_touch_where_the_input_crossed_and_keep_its_region() {
+        for (name, rings, crossings) in exact_crossings() {
+            if name == "a square crossing a ring wound twice" {
+                // (the ring wound twice touches itself at every vertex: see below)
+                continue;
+            }
             let (area, long_way_added) = even_odd(&rings);
             assert_eq!(long_way_added, crossings, "{name}");
             let (relinked, added) = relinked(&rings).unwrap_or_else(|| panic!("{name}: declined"));
@@ -576,6 +813,67 @@ mod tests {
                 "{name}: {relinked:?}"
             );
         }
+    }
+
+    /// By every rule, the rings of the split edges bound the rule's region as the long
+    /// way does (equal areas: the crossings are exact), pass strict mode's check, and
+    /// add the crossing points; after the even–odd relinking, [`rewind`] gives the same
+    /// rings from the same split edges.
+    #[test]
+    fn every_rule_bounds_its_region_of_the_split_edges() {
+        let mut cases = exact_crossings();
+        cases.push(("pentagram", vec![super::super::tests::pentagram()], 5));
+        for (name, rings, crossings) in cases {
+            for rule in FillRule::ALL {
+                let (area, _) = long_way(&rings, rule);
+                let (bounds, added) = uncrossed(&rings, Some(rule))
+                    .unwrap_or_else(|| panic!("{name}, {rule:?}: declined"));
+                assert_eq!(added.len(), crossings, "{name}, {rule:?}");
+                let tolerance = if name == "pentagram" { 1e-9 } else { 1e-12 };
+                let bounded = signed_area(&bounds);
+                assert!(
+                    (bounded - area).abs() <= tolerance * area.abs().max(1.0),
+                    "{name}, {rule:?}: {bounded} against {area}"
+                );
+                if !bounds.is_empty() {
+                    assert_valid(&bounds, name);
+                }
+            }
+            // the even–odd rings again, after relinking, from the same split edges
+            let (vertices, starts) = flat(&rings);
+            let mut r = Resolve::default();
+            let mut added = Vec::new();
+            let grid = SnapGrid { f32: false };
+            assert!(uncross(&mut r, &vertices, &starts, grid, &mut added, None).unwrap());
+            assert!(rewind(&mut r, FillRule::EvenOdd), "{name}");
+            let again = signed_area(&rings_of(&r, &vertices, &added));
+            let (area, _) = even_odd(&rings);
+            assert!((again - area).abs() <= 1e-9 * area.abs(), "{name}");
+        }
+    }
+
+    /// A crossing rounded past a vertex: a split edge then crosses edges that no edge
+    /// crossed before, which the sweep counting winding numbers finds: by every rule, the
+    /// short way declines (the long way's snap rounding takes such input).
+    #[test]
+    fn split_edges_that_rounding_made_cross_are_declined() {
+        // a–b and c–d cross at p, rounded to p′ below a–b; w lies strictly between a–b
+        // and a → p′ (found by exact search among the points near p′), the apex of a
+        // thin triangle hanging below it, between a–b and c–d, which it meets nowhere
+        let (a, b, c, d) = ([0.0, 0.0], [3.0, 1.1], [1.0, -1.0], [1.3, 1.0]);
+        let w = [1.216931216931212, 0.4462081128747778];
+        let hanging = vec![w, [w[0] - 0.01, w[1] - 0.01], [w[0] - 0.005, w[1] - 0.01]];
+        let rings = vec![vec![a, b, d, c], hanging];
+        for rule in FillRule::ALL {
+            assert!(uncrossed(&rings, Some(rule)).is_none(), "{rule:?}");
+        }
+        // relinked, they cross: strict mode refuses them
+        let (relinked, added) = relinked(&rings).expect("relinked");
+        assert_eq!(added.len(), 1);
+        let (vertices, starts) = flat(&relinked);
+        let checked =
+            crate::Triangulator::<f64>::new().check(&vertices, &starts, crate::Nesting::Auto);
+        assert!(checked.is_err());
     }
 
     #[test]

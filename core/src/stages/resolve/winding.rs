@@ -14,7 +14,7 @@
 use core::cmp::Ordering;
 
 use crate::crossings::status::{Blocks, Sequence};
-use crate::geom::{orient2d, Orientation, Point};
+use crate::geom::{orient2d, overlaps, segments_meet, Orientation, Point};
 use crate::FillRule;
 
 /// An edge from its smaller end `p` to its larger `q`, with its net count from p to q.
@@ -82,14 +82,23 @@ fn pt(p: [f64; 2]) -> Point {
     Point::new(p[0], p[1])
 }
 
-/// Finds the boundary edges of `rule`'s region among `fragments` (pairs of points of
-/// `hot`, meeting only at their ends, with net counts from the first to the second).
+/// Finds the boundary edges of `rule`'s region among `fragments` (pairs of distinct
+/// points of `hot`, no pair twice, with net counts from the first to the second), which
+/// must meet only at their ends.
+///
+/// With `verify`, the sweep also proves that they do, as Shamos and Hoey's sweep does:
+/// it returns false (its boundary then means nothing) where a fragment passes through a
+/// vertex, two run along each other from one, or two that become neighbours in the
+/// status meet other than at an end they share. The first point (in sweep order) where
+/// two fragments meet otherwise is one of these: the status is in order before it, so two
+/// fragments through it are neighbours there or one of them ends there.
 pub(crate) fn boundary(
     s: &mut Scratch,
     hot: &[[f64; 2]],
     fragments: &[(u32, u32, i32)],
     rule: FillRule,
-) {
+    verify: bool,
+) -> bool {
     s.boundary.clear();
     s.edges.clear();
     for &(a, b, c) in fragments {
@@ -131,11 +140,17 @@ pub(crate) fn boundary(
         };
         let lo = s.status.search(below);
         let hi = s.status.walk(lo, |&e| edges[e as usize].q == v);
-        let mut w = s
-            .status
-            .before(lo)
-            .and_then(|c| s.status.item(c))
-            .map_or(0, |e| s.above[e as usize]);
+        let under = s.status.before(lo).and_then(|c| s.status.item(c));
+        let over = s.status.item(hi);
+        // (the first fragment above those ending at v passes strictly above v)
+        let passes_above = |e: u32| {
+            let e = edges[e as usize];
+            orient2d(pt(hot[e.p as usize]), pt(hot[e.q as usize]), pv) == Orientation::Clockwise
+        };
+        if verify && over.is_some_and(|e| !passes_above(e)) {
+            return false;
+        }
+        let mut w = under.map_or(0, |e| s.above[e as usize]);
         // the edges starting at v, bottom to top
         s.new.clear();
         let (f0, f1) = (
@@ -143,17 +158,37 @@ pub(crate) fn boundary(
             s.first[v as usize + 1] as usize,
         );
         s.new.extend_from_slice(&s.starting[f0..f1]);
-        s.new.sort_unstable_by(|&a, &b| {
+        let turn = |a: u32, b: u32| {
             let (qa, qb) = (
                 hot[edges[a as usize].q as usize],
                 hot[edges[b as usize].q as usize],
             );
-            match orient2d(pv, pt(qa), pt(qb)) {
-                Orientation::CounterClockwise => Ordering::Less,
-                Orientation::Clockwise => Ordering::Greater,
-                Orientation::Collinear => Ordering::Equal,
-            }
+            orient2d(pv, pt(qa), pt(qb))
+        };
+        s.new.sort_unstable_by(|&a, &b| match turn(a, b) {
+            Orientation::CounterClockwise => Ordering::Less,
+            Orientation::Clockwise => Ordering::Greater,
+            Orientation::Collinear => Ordering::Equal,
         });
+        if verify {
+            // (two leaving v to the right in one direction run along each other)
+            let along = (s.new.windows(2)).any(|w| turn(w[0], w[1]) == Orientation::Collinear);
+            // the new neighbours: below and above the fragments starting at v, or each
+            // other where none does
+            let (first, last) = (s.new.first().copied(), s.new.last().copied());
+            let apart = |e: Option<u32>, f: Option<u32>| match (e, f) {
+                (Some(e), Some(f)) => !improper(hot, edges[e as usize], edges[f as usize]),
+                _ => true,
+            };
+            let fine = if first.is_some() {
+                apart(under, first) && apart(last, over)
+            } else {
+                apart(under, over)
+            };
+            if along || !fine {
+                return false;
+            }
+        }
         for &e in &s.new {
             let edge = edges[e as usize];
             let below_w = w;
@@ -170,11 +205,70 @@ pub(crate) fn boundary(
         }
         s.status.replace(lo, hi, &s.new);
     }
+    true
+}
+
+/// Whether fragments `e` and `f` (distinct, between distinct points) meet other than at
+/// an end they share: cross, touch, or run along each other.
+fn improper(hot: &[[f64; 2]], e: Edge, f: Edge) -> bool {
+    let [a, b, c, d] = [e.p, e.q, f.p, f.q].map(|v| pt(hot[v as usize]));
+    if e.p == f.p || e.p == f.q || e.q == f.p || e.q == f.q {
+        overlaps(a, b, c, d)
+    } else {
+        segments_meet(a, b, c, d)
+    }
 }
 
 #[cfg(test)]
 mod tests {
-    use super::{lex, sweep_order, Scratch};
+    use super::{boundary, lex, sweep_order, Scratch};
+    use crate::FillRule;
+
+    /// The sweep's proof that fragments meet only at their ends: it passes a square cut
+    /// by a diagonal (and finds its boundary), and fails wherever two meet otherwise —
+    /// crossing, a vertex inside a fragment, two along each other from one end or one
+    /// inside the other — whichever way the fragments are listed.
+    #[test]
+    fn the_sweep_proves_fragments_meet_only_at_their_ends() {
+        let mut hot = vec![
+            [0.0, 0.0],
+            [2.0, 0.0],
+            [2.0, 2.0],
+            [0.0, 2.0],
+            [1.0, 1.0],
+            [3.0, 3.0],
+        ];
+        // the square, counter-clockwise
+        let square = [(0, 1, 1), (1, 2, 1), (2, 3, 1), (3, 0, 1)];
+        let mut s = Scratch::default();
+        let mut with = |hot: &[[f64; 2]], extra: &[(u32, u32, i32)]| {
+            let mut fragments = square.to_vec();
+            fragments.extend_from_slice(extra);
+            let mut planar = [false; 2];
+            for (k, planar) in planar.iter_mut().enumerate() {
+                if k == 1 {
+                    fragments.reverse();
+                }
+                *planar = boundary(&mut s, hot, &fragments, FillRule::NonZero, true);
+            }
+            assert_eq!(planar[0], planar[1], "{extra:?}");
+            (planar[0], s.boundary.len())
+        };
+        // a diagonal in two halves meeting at the centre, run once each way (net 0):
+        // planar, the square's 4 edges
+        assert_eq!(with(&hot, &[(0, 4, 0), (4, 2, 0)]), (true, 4));
+        // the two diagonals, whole: they cross at (1, 1)
+        assert!(!with(&hot, &[(0, 2, 0), (1, 3, 0)]).0);
+        // from one end along each other (0 → 4 on 0 → 5), or one inside the other
+        assert!(!with(&hot, &[(0, 4, 0), (0, 5, 0)]).0);
+        assert!(!with(&hot, &[(4, 2, 0), (0, 5, 0)]).0);
+        // the centre on a whole diagonal
+        assert!(!with(&hot, &[(0, 2, 0), (4, 5, 0)]).0);
+        // (1, 0) inside the bottom edge, with an edge from it or alone
+        hot.push([1.0, 0.0]);
+        assert!(!with(&hot, &[(6, 4, 0)]).0);
+        assert!(!with(&hot, &[]).0);
+    }
     use crate::testing::random;
     use core::cmp::Ordering;
 

@@ -63,7 +63,9 @@ found from the current directory upwards or from where polytri was built.
 
 Columns: per implementation the median time of one run in milliseconds and, in \
 parentheses, its ratio to the fastest peer on that input (polytri columns too: below 1 \
-means polytri is faster than every peer). Peers: earcut, earcutr, i-triangle, lyon, spade. \
+means polytri is faster than every peer). Peers: earcut, earcutr, i-triangle, lyon, spade \
+(i-triangle and lyon read every ring at once by the even-odd rule; on request \
+i-triangle-nonzero and lyon-nonzero read them by the nonzero rule). \
 Two references, no peers (never the fastest peer): earcut-exact is earcut 0.4.12 with \
 exact predicates — its code vendored, the signed area of three points and the \
 point-in-triangle test decided by the exact sign of orient2d, everything else unchanged — \
@@ -78,7 +80,8 @@ polytri-fast for the check's share. polytri-threads is polytri-fast with the pol
 file spread over every core (triangulate_many; one polygon of 262,144 vertices or more is clipped by mark-and-cut on them). On \
 request (--polytri): even-odd and seidel-even-odd read all of a file's rings at once by \
 the even-odd fill rule (crossing edges split at exactly rounded points), with the fast \
-ear clipper or Seidel's trapezoidation, as lyon and i-triangle read them; even-odd-each \
+ear clipper or Seidel's trapezoidation, as lyon and i-triangle read them (nonzero and \
+seidel-nonzero likewise by the nonzero rule, as lyon-nonzero and i-triangle-nonzero); even-odd-each \
 takes a file's polygons one at a time by the same rule, as polytri-fast takes them; seidel is \
 Seidel's trapezoidation in strict mode; check-floor is a reference, not polytri's code: the \
 least an exact input check costs (every vertex read, one exact orientation per edge: the \
@@ -115,13 +118,14 @@ pub struct Args {
     pub files: Vec<PathBuf>,
 
     /// Peers to compare with, comma-separated, and the references earcut-exact and
-    /// earcut-vendored [default: all]
+    /// earcut-vendored [default: all but lyon-nonzero and i-triangle-nonzero]
     #[arg(long, value_delimiter = ',', value_name = "PEERS",
           value_parser = parse_peer)]
     pub peers: Option<Vec<Peer>>,
 
     /// polytri configurations, comma-separated: fast, lenient, quality, check, threads,
-    /// even-odd, even-odd-each, seidel, seidel-even-odd, and the reference check-floor
+    /// even-odd, even-odd-each, seidel, seidel-even-odd, nonzero, seidel-nonzero, and the
+    /// reference check-floor
     /// [default: the first five; --scaling: the first four]
     #[arg(long, value_delimiter = ',', value_name = "CONFIGS",
           value_parser = parse_polytri)]
@@ -200,7 +204,7 @@ fn parse_polytri(s: &str) -> Result<Implementation, String> {
         .into_iter()
         .find(|imp| imp.name().eq_ignore_ascii_case(&full))
         .ok_or_else(|| {
-            format!("unknown polytri configuration '{s}' (known: fast, lenient, quality, check, threads, even-odd, even-odd-each, seidel, seidel-even-odd, check-floor)")
+            format!("unknown polytri configuration '{s}' (known: fast, lenient, quality, check, threads, even-odd, even-odd-each, seidel, seidel-even-odd, nonzero, seidel-nonzero, check-floor)")
         })
 }
 

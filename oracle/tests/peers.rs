@@ -228,3 +228,44 @@ fn runner_check_refuses_what_strict_polytri_refuses() {
         .run(Implementation::PolytriLenient, &prepared)
         .is_ok());
 }
+
+/// The nonzero peers read a square wound twice (and a hole wound the same way as its
+/// outer ring) as the nonzero rule does — the whole square — where the even–odd peers
+/// leave the parts wound twice out; the runner's nonzero configurations of polytri agree.
+#[test]
+fn nonzero_peers_fill_what_is_wound_twice() {
+    let twice = [square(0.0, 0.0, 10.0), square(0.0, 0.0, 10.0)].concat();
+    let same_way = [square(0.0, 0.0, 10.0), square(3.0, 3.0, 4.0)];
+    for (rings, nonzero, even_odd) in [(vec![twice], 100.0, 0.0), (same_way.to_vec(), 100.0, 84.0)]
+    {
+        let input = Input::from_rings(&rings, Nesting::Auto);
+        for peer in Peer::NONZERO {
+            let tolerance = if peer == Peer::LyonNonZero {
+                1e-5
+            } else {
+                1e-9
+            };
+            run(peer, &input, nonzero, tolerance);
+        }
+        for peer in [Peer::Lyon, Peer::ITriangle] {
+            let out = peers::triangulate(peer, &input).unwrap_or_else(|e| panic!("{peer}: {e}"));
+            assert!(
+                (triangle_area(&out, &input) - even_odd).abs() < 1e-4,
+                "{peer}"
+            );
+        }
+        let prepared = Prepared::new(&input);
+        let mut runner = Runner::new();
+        let many = |runner: &mut Runner, imp| runner.run(imp, &prepared).map(|t| t > 0);
+        for imp in [
+            Implementation::PolytriNonZero,
+            Implementation::PolytriSeidelNonZero,
+        ] {
+            assert_eq!(many(&mut runner, imp), Ok(true), "{imp}");
+        }
+        for imp in Peer::NONZERO.map(Implementation::Peer) {
+            assert!(imp.is_peer());
+            assert_eq!(imp.to_string().parse::<Implementation>(), Ok(imp));
+        }
+    }
+}

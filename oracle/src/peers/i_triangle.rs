@@ -1,4 +1,5 @@
-//! i_triangle: every ring at once, even-odd fill rule, on its integer grid.
+//! i_triangle: every ring at once, even-odd fill rule (nonzero on request), on its
+//! integer grid.
 
 use i_triangle::float::triangulation::Triangulation;
 use i_triangle::float::triangulator::Triangulator;
@@ -9,11 +10,17 @@ use i_triangle::int::validation::Validation;
 use super::{extent, snap_to_input, PeerOutput, Precision};
 use crate::input::Input;
 
-/// The triangulator the peer is run with: `u32` indices, `i32` grid (its default), even-odd.
-pub(super) fn triangulator(capacity: usize) -> Triangulator<u32, i32> {
+/// The triangulator the peer is run with: `u32` indices, `i32` grid (its default),
+/// even-odd or nonzero.
+pub(super) fn triangulator(capacity: usize, nonzero: bool) -> Triangulator<u32, i32> {
+    let rule = if nonzero {
+        FillRule::NonZero
+    } else {
+        FillRule::EvenOdd
+    };
     Triangulator::new(
         capacity,
-        Validation::with_fill_rule(FillRule::EvenOdd),
+        Validation::with_fill_rule(rule),
         Solver::default(),
     )
 }
@@ -21,9 +28,13 @@ pub(super) fn triangulator(capacity: usize) -> Triangulator<u32, i32> {
 /// Triangulates `input`; its points come back from the integer grid, so they are matched
 /// to the input's within the grid's resolution, and kept as the peer's own where some
 /// point has no match (crossings it resolved).
-pub(super) fn triangulate(input: &Input, precision: Precision) -> Result<PeerOutput, String> {
+pub(super) fn triangulate(
+    input: &Input,
+    precision: Precision,
+    nonzero: bool,
+) -> Result<PeerOutput, String> {
     let rings = input.rings();
-    let mut tri = triangulator(input.vertices.len());
+    let mut tri = triangulator(input.vertices.len(), nonzero);
     let (points, indices): (Vec<[f64; 2]>, Vec<u32>) = match precision {
         Precision::F64 => {
             let mut out = Triangulation::<[f64; 2], u32>::with_capacity(input.vertices.len());

@@ -1,4 +1,5 @@
-//! lyon_tessellation's fill tessellator: every ring at once, even-odd fill rule, `f32`.
+//! lyon_tessellation's fill tessellator: every ring at once, even-odd fill rule (nonzero
+//! on request), `f32`.
 
 use lyon_tessellation::geometry_builder::{FillGeometryBuilder, GeometryBuilder};
 use lyon_tessellation::math::point;
@@ -11,9 +12,15 @@ use lyon_tessellation::{
 use super::PeerOutput;
 use crate::input::Input;
 
-/// The options the peer runs with. Tolerance only matters for curves; polygons have none.
-pub(super) fn options() -> FillOptions {
-    FillOptions::non_zero().with_fill_rule(FillRule::EvenOdd)
+/// The options the peer runs with: even–odd, or nonzero. Tolerance only matters for
+/// curves; polygons have none.
+pub(super) fn options(nonzero: bool) -> FillOptions {
+    let rule = if nonzero {
+        FillRule::NonZero
+    } else {
+        FillRule::EvenOdd
+    };
+    FillOptions::non_zero().with_fill_rule(rule)
 }
 
 /// `input` as a lyon path (every ring closed), and for each endpoint id the input vertex.
@@ -44,12 +51,12 @@ pub(super) fn path(input: &Input) -> (Path, Vec<u32>) {
 
 /// Triangulates `input`; vertices that lyon made at crossings have no input vertex, and
 /// then the output keeps lyon's own vertex list.
-pub(super) fn triangulate(input: &Input) -> Result<PeerOutput, String> {
+pub(super) fn triangulate(input: &Input, nonzero: bool) -> Result<PeerOutput, String> {
     let (path, to_input) = path(input);
     let mut collect = Collect::default();
     // with ids, so every vertex can say which path endpoints it sits on
     FillTessellator::new()
-        .tessellate_with_ids(path.id_iter(), &path, None, &options(), &mut collect)
+        .tessellate_with_ids(path.id_iter(), &path, None, &options(nonzero), &mut collect)
         .map_err(|e| format!("lyon: {e:?}"))?;
     let mapped: Option<Vec<u32>> = collect
         .sources

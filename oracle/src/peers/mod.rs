@@ -66,6 +66,12 @@ pub enum Peer {
     /// `spade`'s constrained Delaunay triangulation of the rings, kept where the nesting
     /// depth is odd.
     Spade,
+    /// [`Peer::Lyon`] with the nonzero fill rule (on request, for fill-rule benchmarks:
+    /// one of [`Peer::NONZERO`]).
+    LyonNonZero,
+    /// [`Peer::ITriangle`] with the nonzero fill rule (on request, as
+    /// [`Peer::LyonNonZero`]).
+    ITriangleNonZero,
     /// A reference, not a competitor: earcut 0.4.12 vendored with its two geometric
     /// predicates (a triangle's signed area, a point in a triangle) decided by the exact
     /// sign of `robust::orient2d`, everything else unchanged
@@ -93,6 +99,11 @@ impl Peer {
     /// one of them (not the fastest peer of a benchmark, not judged by campaigns).
     pub const REFERENCES: [Peer; 2] = [Peer::EarcutExact, Peer::EarcutVendored];
 
+    /// The peers that read their input by the nonzero fill rule, for benchmarks of
+    /// polytri's nonzero configurations (on request only: not in [`Peer::ALL`], whose
+    /// readings match polytri's nesting on valid input).
+    pub const NONZERO: [Peer; 2] = [Peer::ITriangleNonZero, Peer::LyonNonZero];
+
     /// Whether this is one of [`Peer::REFERENCES`].
     pub const fn is_reference(self) -> bool {
         matches!(self, Peer::EarcutExact | Peer::EarcutVendored)
@@ -108,6 +119,8 @@ impl Peer {
             Peer::ITriangle => "i-triangle",
             Peer::Lyon => "lyon",
             Peer::Spade => "spade",
+            Peer::LyonNonZero => "lyon-nonzero",
+            Peer::ITriangleNonZero => "i-triangle-nonzero",
         }
     }
 }
@@ -124,7 +137,10 @@ impl FromStr for Peer {
     /// Reads a kebab-case name, of a peer or a reference (`i_triangle` with an underscore
     /// is accepted too).
     fn from_str(s: &str) -> Result<Self, Self::Err> {
-        let named: Vec<Peer> = Peer::ALL.into_iter().chain(Peer::REFERENCES).collect();
+        let named: Vec<Peer> = (Peer::ALL.into_iter())
+            .chain(Peer::REFERENCES)
+            .chain(Peer::NONZERO)
+            .collect();
         crate::by_name(&s.replace('_', "-"), &named, Peer::name, "peer")
     }
 }
@@ -206,8 +222,10 @@ fn run_once(peer: Peer, input: &Input, precision: Precision) -> Result<PeerOutpu
         Peer::EarcutExact => Ok(earcut::earcut_exact(input)),
         Peer::EarcutVendored => Ok(earcut::earcut_vendored(input)),
         Peer::Earcutr => earcut::earcutr(input, precision),
-        Peer::ITriangle => i_triangle::triangulate(input, precision),
-        Peer::Lyon => lyon::triangulate(input),
+        Peer::ITriangle => i_triangle::triangulate(input, precision, false),
+        Peer::ITriangleNonZero => i_triangle::triangulate(input, precision, true),
+        Peer::Lyon => lyon::triangulate(input, false),
+        Peer::LyonNonZero => lyon::triangulate(input, true),
         Peer::Spade => spade::triangulate(input),
     }));
     match result {

@@ -14,6 +14,7 @@ use super::group::{polygons, Polygon};
 use super::spade::Constraints;
 use super::{check_finite, panic_message, Peer};
 use crate::input::Input;
+use polytri::FillRule::{EvenOdd, NonZero};
 
 /// Something a benchmark times: a polytri configuration or a peer.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -51,6 +52,13 @@ pub enum Implementation {
     /// [`PolytriEvenOdd`](Self::PolytriEvenOdd) with [`polytri::Strategy::Seidel`]: the
     /// resolved region trapezoidated. Not in the default set: `--polytri seidel-even-odd`.
     PolytriSeidelEvenOdd,
+    /// [`PolytriEvenOdd`](Self::PolytriEvenOdd) by the nonzero fill rule (as
+    /// [`Peer::LyonNonZero`] and [`Peer::ITriangleNonZero`] read their input). Not in the
+    /// default set: `--polytri nonzero`.
+    PolytriNonZero,
+    /// [`PolytriNonZero`](Self::PolytriNonZero) with [`polytri::Strategy::Seidel`]. Not
+    /// in the default set: `--polytri seidel-nonzero`.
+    PolytriSeidelNonZero,
     /// A reference beside [`PolytriCheck`](Self::PolytriCheck), not polytri's code: the
     /// least an exact input check costs — every vertex read and one exact orientation per
     /// edge, the star-shaped certificate from each ring's vertex mean, counted as done
@@ -72,7 +80,7 @@ impl Implementation {
     ];
 
     /// Every polytri configuration: the default ones, then the optional ones.
-    pub const POLYTRI_ALL: [Implementation; 10] = [
+    pub const POLYTRI_ALL: [Implementation; 12] = [
         Implementation::PolytriFast,
         Implementation::PolytriLenient,
         Implementation::PolytriQuality,
@@ -82,6 +90,8 @@ impl Implementation {
         Implementation::PolytriEvenOddEach,
         Implementation::PolytriSeidel,
         Implementation::PolytriSeidelEvenOdd,
+        Implementation::PolytriNonZero,
+        Implementation::PolytriSeidelNonZero,
         Implementation::PolytriCheckFloor,
     ];
 
@@ -125,6 +135,8 @@ impl Implementation {
             Implementation::PolytriEvenOddEach => "polytri-even-odd-each",
             Implementation::PolytriSeidel => "polytri-seidel",
             Implementation::PolytriSeidelEvenOdd => "polytri-seidel-even-odd",
+            Implementation::PolytriNonZero => "polytri-nonzero",
+            Implementation::PolytriSeidelNonZero => "polytri-seidel-nonzero",
             Implementation::PolytriCheckFloor => "polytri-check-floor",
             Implementation::Peer(peer) => peer.name(),
         }
@@ -214,6 +226,7 @@ pub struct Runner {
     earcut_out: Vec<u32>,
     floor: Floor,
     i_triangle: i_triangle::float::triangulator::Triangulator<u32, i32>,
+    i_triangle_nonzero: i_triangle::float::triangulator::Triangulator<u32, i32>,
     i_triangle_out: Triangulation<[f64; 2], u32>,
     lyon: FillTessellator,
     lyon_out: VertexBuffers<[f32; 2], u32>,
@@ -243,7 +256,8 @@ impl Runner {
             earcut_vendored: vendored::Earcut::new(),
             earcut_out: Vec::new(),
             floor: Floor::default(),
-            i_triangle: super::i_triangle::triangulator(64),
+            i_triangle: super::i_triangle::triangulator(64, false),
+            i_triangle_nonzero: super::i_triangle::triangulator(64, true),
             i_triangle_out: Triangulation::with_capacity(64),
             lyon: FillTessellator::new(),
             lyon_out: VertexBuffers::new(),
@@ -287,33 +301,44 @@ impl Runner {
                 prepared,
                 polytri::Options::new().with_strategy(polytri::Strategy::Seidel),
             ),
-            Implementation::PolytriEvenOdd => self.polytri_fill(prepared, polytri::Strategy::Fast),
+            Implementation::PolytriEvenOdd => {
+                self.polytri_fill(prepared, polytri::Strategy::Fast, EvenOdd)
+            }
+            Implementation::PolytriNonZero => {
+                self.polytri_fill(prepared, polytri::Strategy::Fast, NonZero)
+            }
+            Implementation::PolytriSeidelNonZero => {
+                self.polytri_fill(prepared, polytri::Strategy::Seidel, NonZero)
+            }
             Implementation::PolytriEvenOddEach => self.polytri(
                 prepared,
                 polytri::Options::new().with_fill_rule(polytri::FillRule::EvenOdd),
             ),
             Implementation::PolytriSeidelEvenOdd => {
-                self.polytri_fill(prepared, polytri::Strategy::Seidel)
+                self.polytri_fill(prepared, polytri::Strategy::Seidel, EvenOdd)
             }
             Implementation::Peer(
                 peer @ (Peer::Earcut | Peer::EarcutExact | Peer::EarcutVendored),
             ) => Ok(self.earcut(prepared, peer)),
             Implementation::Peer(Peer::Earcutr) => earcutr(prepared),
-            Implementation::Peer(Peer::ITriangle) => Ok(self.i_triangle(prepared)),
-            Implementation::Peer(Peer::Lyon) => self.lyon(prepared),
+            Implementation::Peer(Peer::ITriangle) => Ok(self.i_triangle(prepared, false)),
+            Implementation::Peer(Peer::ITriangleNonZero) => Ok(self.i_triangle(prepared, true)),
+            Implementation::Peer(Peer::Lyon) => self.lyon(prepared, false),
+            Implementation::Peer(Peer::LyonNonZero) => self.lyon(prepared, true),
             Implementation::Peer(Peer::Spade) => spade(prepared),
         }
     }
 
-    /// polytri with the even–odd fill rule on all the input's rings at once.
+    /// polytri with a fill rule on all the input's rings at once.
     fn polytri_fill(
         &mut self,
         prepared: &Prepared,
         strategy: polytri::Strategy,
+        rule: polytri::FillRule,
     ) -> Result<usize, String> {
         let input = &prepared.input;
         let options = polytri::Options::new()
-            .with_fill_rule(polytri::FillRule::EvenOdd)
+            .with_fill_rule(rule)
             .with_strategy(strategy);
         (self.polytri)
             .triangulate(
@@ -399,19 +424,23 @@ impl Runner {
         triangles
     }
 
-    fn i_triangle(&mut self, prepared: &Prepared) -> usize {
-        self.i_triangle
-            .triangulate_into(&prepared.rings, &mut self.i_triangle_out);
+    fn i_triangle(&mut self, prepared: &Prepared, nonzero: bool) -> usize {
+        let tri = if nonzero {
+            &mut self.i_triangle_nonzero
+        } else {
+            &mut self.i_triangle
+        };
+        tri.triangulate_into(&prepared.rings, &mut self.i_triangle_out);
         self.i_triangle_out.indices.len() / 3
     }
 
-    fn lyon(&mut self, prepared: &Prepared) -> Result<usize, String> {
+    fn lyon(&mut self, prepared: &Prepared, nonzero: bool) -> Result<usize, String> {
         self.lyon_out.vertices.clear();
         self.lyon_out.indices.clear();
         let mut builder =
             BuffersBuilder::new(&mut self.lyon_out, |v: FillVertex| v.position().to_array());
         self.lyon
-            .tessellate_path(&prepared.path, &super::lyon::options(), &mut builder)
+            .tessellate_path(&prepared.path, &super::lyon::options(nonzero), &mut builder)
             .map_err(|e| format!("lyon: {e:?}"))?;
         Ok(self.lyon_out.indices.len() / 3)
     }

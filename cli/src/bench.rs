@@ -82,7 +82,8 @@ request (--polytri): even-odd and seidel-even-odd read all of a file's rings at 
 the even-odd fill rule (crossing edges split at exactly rounded points), with the fast \
 ear clipper or Seidel's trapezoidation, as lyon and i-triangle read them (nonzero and \
 seidel-nonzero likewise by the nonzero rule, as lyon-nonzero and i-triangle-nonzero); even-odd-each \
-takes a file's polygons one at a time by the same rule, as polytri-fast takes them; seidel is \
+takes a file's polygons one at a time by the same rule, as polytri-fast takes them (nonzero-each \
+by the nonzero rule); seidel is \
 Seidel's trapezoidation in strict mode; check-floor is a reference, not polytri's code: the \
 least an exact input check costs (every vertex read, one exact orientation per edge: the \
 star-shaped certificate from each ring's vertex mean, counted as done whether or not it \
@@ -124,8 +125,8 @@ pub struct Args {
     pub peers: Option<Vec<Peer>>,
 
     /// polytri configurations, comma-separated: fast, lenient, quality, check, threads,
-    /// even-odd, even-odd-each, seidel, seidel-even-odd, nonzero, seidel-nonzero, and the
-    /// reference check-floor
+    /// even-odd, even-odd-each, seidel, seidel-even-odd, nonzero, seidel-nonzero,
+    /// nonzero-each, and the reference check-floor
     /// [default: the first five; --scaling: the first four]
     #[arg(long, value_delimiter = ',', value_name = "CONFIGS",
           value_parser = parse_polytri)]
@@ -204,7 +205,7 @@ fn parse_polytri(s: &str) -> Result<Implementation, String> {
         .into_iter()
         .find(|imp| imp.name().eq_ignore_ascii_case(&full))
         .ok_or_else(|| {
-            format!("unknown polytri configuration '{s}' (known: fast, lenient, quality, check, threads, even-odd, even-odd-each, seidel, seidel-even-odd, nonzero, seidel-nonzero, check-floor)")
+            format!("unknown polytri configuration '{s}' (known: fast, lenient, quality, check, threads, even-odd, even-odd-each, seidel, seidel-even-odd, nonzero, seidel-nonzero, nonzero-each, check-floor)")
         })
 }
 

@@ -257,10 +257,12 @@ fn nonzero_peers_fill_what_is_wound_twice() {
         let prepared = Prepared::new(&input);
         let mut runner = Runner::new();
         let many = |runner: &mut Runner, imp| runner.run(imp, &prepared).map(|t| t > 0);
-        for imp in [
+        let nonzero = [
             Implementation::PolytriNonZero,
             Implementation::PolytriSeidelNonZero,
-        ] {
+            Implementation::PolytriNonZeroEach,
+        ];
+        for imp in nonzero {
             assert_eq!(many(&mut runner, imp), Ok(true), "{imp}");
         }
         for imp in Peer::NONZERO.map(Implementation::Peer) {

@@ -59,6 +59,9 @@ pub enum Implementation {
     /// [`PolytriNonZero`](Self::PolytriNonZero) with [`polytri::Strategy::Seidel`]. Not
     /// in the default set: `--polytri seidel-nonzero`.
     PolytriSeidelNonZero,
+    /// [`PolytriEvenOddEach`](Self::PolytriEvenOddEach) by the nonzero rule: one polygon
+    /// at a time. Not in the default set: `--polytri nonzero-each`.
+    PolytriNonZeroEach,
     /// A reference beside [`PolytriCheck`](Self::PolytriCheck), not polytri's code: the
     /// least an exact input check costs — every vertex read and one exact orientation per
     /// edge, the star-shaped certificate from each ring's vertex mean, counted as done
@@ -80,7 +83,7 @@ impl Implementation {
     ];
 
     /// Every polytri configuration: the default ones, then the optional ones.
-    pub const POLYTRI_ALL: [Implementation; 12] = [
+    pub const POLYTRI_ALL: [Implementation; 13] = [
         Implementation::PolytriFast,
         Implementation::PolytriLenient,
         Implementation::PolytriQuality,
@@ -92,6 +95,7 @@ impl Implementation {
         Implementation::PolytriSeidelEvenOdd,
         Implementation::PolytriNonZero,
         Implementation::PolytriSeidelNonZero,
+        Implementation::PolytriNonZeroEach,
         Implementation::PolytriCheckFloor,
     ];
 
@@ -137,6 +141,7 @@ impl Implementation {
             Implementation::PolytriSeidelEvenOdd => "polytri-seidel-even-odd",
             Implementation::PolytriNonZero => "polytri-nonzero",
             Implementation::PolytriSeidelNonZero => "polytri-seidel-nonzero",
+            Implementation::PolytriNonZeroEach => "polytri-nonzero-each",
             Implementation::PolytriCheckFloor => "polytri-check-floor",
             Implementation::Peer(peer) => peer.name(),
         }
@@ -310,10 +315,12 @@ impl Runner {
             Implementation::PolytriSeidelNonZero => {
                 self.polytri_fill(prepared, polytri::Strategy::Seidel, NonZero)
             }
-            Implementation::PolytriEvenOddEach => self.polytri(
-                prepared,
-                polytri::Options::new().with_fill_rule(polytri::FillRule::EvenOdd),
-            ),
+            Implementation::PolytriEvenOddEach => {
+                self.polytri(prepared, polytri::Options::new().with_fill_rule(EvenOdd))
+            }
+            Implementation::PolytriNonZeroEach => {
+                self.polytri(prepared, polytri::Options::new().with_fill_rule(NonZero))
+            }
             Implementation::PolytriSeidelEvenOdd => {
                 self.polytri_fill(prepared, polytri::Strategy::Seidel, EvenOdd)
             }

@@ -282,3 +282,59 @@ fn strict_mode_answers_where_the_rule_reads_the_rings_as_nested() {
         assert_eq!(area(&nonzero), 144.0);
     }
 }
+
+/// Rings that touch take strict mode's path by every rule where they wind as they nest,
+/// and not where a hole winds like its outer ring: here a hole whose edge a vertex of the
+/// outer ring's notch lies on (so strict mode splits that edge there), in every rotation
+/// and both orientations, judged by the oracle and by area (outer 14, hole 3).
+#[test]
+fn touching_rings_wound_either_way_get_each_rule_s_region() {
+    let outer = vec![[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [2.0, 3.0], [0.0, 4.0]];
+    let hole = [[1.0, 3.0], [1.5, 1.0], [2.5, 1.0], [3.0, 3.0]];
+    for turn in 0..hole.len() {
+        for counter_clockwise in [true, false] {
+            let mut h = hole.to_vec();
+            h.rotate_left(turn);
+            if !counter_clockwise {
+                h.reverse();
+            }
+            let vertices = [outer.clone(), h].concat();
+            let starts = [0, outer.len()];
+            for rule in FillRule::ALL {
+                // the hole's winding: 2 (nonzero and positive fill it) or 0
+                let hole_in = if counter_clockwise {
+                    rule.contains(2)
+                } else {
+                    rule.contains(0)
+                };
+                let expected = if !rule.contains(1) {
+                    if hole_in {
+                        3.0
+                    } else {
+                        0.0
+                    }
+                } else if hole_in {
+                    14.0
+                } else {
+                    11.0
+                };
+                for strategy in [Strategy::Fast, Strategy::Quality, Strategy::Seidel] {
+                    let name =
+                        format!("turn {turn}, ccw {counter_clockwise}, {rule:?}, {strategy:?}");
+                    let failure = judge(&vertices, &vertices, &starts, rule, strategy);
+                    assert!(failure.is_none(), "{name}: {failure:?}");
+                    let options = Options::new().with_strategy(strategy).with_fill_rule(rule);
+                    let (t, _) = triangulate(&vertices, &starts, &options);
+                    let area: f64 = t
+                        .iter()
+                        .map(|t| {
+                            let [a, b, c] = t.map(|i| vertices[i as usize]);
+                            ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])) / 2.0
+                        })
+                        .sum();
+                    assert_eq!(area, expected, "{name}");
+                }
+            }
+        }
+    }
+}

@@ -9,7 +9,6 @@ use crate::context::Context;
 use crate::geom::{orient2d, Coord, Orientation, Point, SnapGrid};
 use crate::report::{Added, DropReason, Dropped};
 use crate::stages::{clean, load, resolve, seidel, small};
-use crate::structures::NodeId;
 use crate::{Error, FillRule, Nesting, Options, Strategy};
 
 /// The fill path's buffers.
@@ -319,15 +318,20 @@ enum Strict {
 ///
 /// Where strict mode's check passes, no two edges cross, and strict mode fills the
 /// faces of the rings' arrangement at even depth: the even–odd rule's region. For the
-/// other rules, where moreover no two rings meet (nor a ring itself), the rings are
-/// disjoint simple curves and each face's winding number is the sum of the orientations
-/// (±1) of the rings round it. If every ring runs as given the way the check turned it
-/// (outer rings counter-clockwise, holes clockwise), the winding numbers are 1 at even
-/// depth and 0 elsewhere, which nonzero and positive read as even–odd does; if every ring
-/// runs against it, they are −1 and 0, for nonzero and negative. Anything else (rings
-/// both ways, rings touching, abs ≥ 2) is left to `resolve`, and so is input whose nodes
-/// mostly lie where rings touch (a layer's polygons sharing their borders, all at once):
-/// joining so many touching rings costs strict mode more than `resolve` takes.
+/// other rules: a ring strict mode takes winds once round its inside (its lobes turn one
+/// way, a lobe inside another turning the other way bounds a hole of it, and rings
+/// winding twice are refused), so its winding number is its orientation (±1) inside and
+/// 0 outside; and rings that do not cross, touching or not, have insides apart or one
+/// inside the other (rings doubling each other are refused), so the rings round a point
+/// form a chain, each inside the one before, of depths 0, 1, 2, …. A face's winding
+/// number is the sum of their orientations. If every ring runs as given the way the
+/// check turned it (outer rings counter-clockwise, holes clockwise), the sum alternates
+/// 1, 0, 1, … down the chain: 1 inside the rings of even depth and 0 elsewhere, which
+/// nonzero and positive read as even–odd does; if every ring runs against it, −1 and 0,
+/// for nonzero and negative. Anything else (rings both ways, abs ≥ 2) is left to
+/// `resolve`, and so is input whose nodes mostly lie where rings touch (a layer's
+/// polygons sharing their borders, all at once): joining so many touching rings costs
+/// strict mode more than `resolve` takes.
 #[allow(clippy::too_many_arguments)] // the call's input, its state and its output
 fn strict_first<T: Coord>(
     cx: &mut Context,
@@ -416,25 +420,32 @@ fn strict_first<T: Coord>(
             Strict::Checked
         }
     };
-    // (the rules other than even–odd take no rings touching)
     let shared = cx.shared.len();
-    if shared > cx.pool.len() / SHARED_MAX || (shared > 0 && rule != FillRule::EvenOdd) {
+    if shared > cx.pool.len() / SHARED_MAX {
         return refused();
     }
     if pipeline::nest(cx, st, Nesting::Auto).is_err() {
         return refused();
     }
     if rule != FillRule::EvenOdd {
-        // (a ring's nodes lie in the pool in input order: a live ring of three nodes or
-        // more runs as given where its node numbers increase round it, wrapping once)
-        let pool = &cx.pool;
-        let given = |start: NodeId| {
-            let (a, b) = (start, pool.next(start));
-            let c = pool.next(b);
-            usize::from(a.0 < b.0) + usize::from(b.0 < c.0) + usize::from(c.0 < a.0) == 2
+        // (a ring's nodes as loaded lie in the pool in input order: a live ring runs as
+        // given where the numbers of three of them in a row increase round it, wrapping
+        // once; nodes that split an edge where a vertex of another ring lies come after
+        // every ring's)
+        let (pool, loaded) = (&cx.pool, &cx.as_loaded);
+        let given = |r: usize| {
+            let ours = loaded[r].nodes();
+            let mut nodes = (pool.ring(cx.rings[r].start)).filter(|n| ours.contains(&n.0));
+            let (a, b, c) = (nodes.next()?, nodes.next()?, nodes.next()?);
+            Some(usize::from(a.0 < b.0) + usize::from(b.0 < c.0) + usize::from(c.0 < a.0) == 2)
         };
-        let mut runs = cx.rings.iter().filter(|r| r.alive).map(|r| given(r.start));
-        let run = (runs.next()).and_then(|first| runs.all(|g| g == first).then_some(first));
+        let mut runs = (0..cx.rings.len())
+            .filter(|&r| cx.rings[r].alive)
+            .map(given);
+        let run = match runs.next().flatten() {
+            Some(first) => runs.all(|g| g == Some(first)).then_some(first),
+            None => None,
+        };
         if !reads_as_nested(rule, run) {
             return refused();
         }

@@ -754,12 +754,13 @@ fn reverse<const N: usize, M: Mask>(s: &mut Scratch<N, M>, r: usize) {
     }
 }
 
-/// For the rings checked last, where no two meet (nor one itself): `Some(true)` when
-/// every ring runs as given, in input order, the way the check turned it (the outer ring
-/// counter-clockwise, holes clockwise), `Some(false)` when every ring runs against it;
-/// `None` where rings touch, or some run each way.
+/// For the rings checked last: `Some(true)` when every ring runs as given, in input
+/// order, the way the check turned it (the outer ring counter-clockwise, holes
+/// clockwise), `Some(false)` when every ring runs against it; `None` where some run each
+/// way. (Rings are the input's until the walk joins touching ones; a node splitting an
+/// edge turned with its ring.)
 pub(crate) fn rings_run<const N: usize, M: Mask>(s: &Scratch<N, M>) -> Option<bool> {
-    if s.touches > 0 || s.tees > 0 || s.rings == 0 {
+    if s.rings == 0 {
         return None;
     }
     let given = |r: usize| s.reversed & bit(usize::from(s.start[r])) == M::NONE;

@@ -273,7 +273,14 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     number_added(&mut results, layout.vertices.len())
         .map_err(|count| Failure(format!("{name}: {count} vertices with the added ones are more than u32 triangle indices can address")))?;
     let describe = |refused: &Refusal| {
-        let what = describe_error(refused, &layout, args.precision, args.fill_rule.is_some());
+        let hints = if args.fill_rule.is_some() {
+            Hints::None
+        } else if z.is_some() {
+            Hints::Lenient
+        } else {
+            Hints::FillRule
+        };
+        let what = describe_error(refused, &layout, args.precision, hints);
         match feature_of(&input, &layout, refused.ring_offset) {
             Some(feature) => format!("{feature}: {what}"),
             None => what,
@@ -564,20 +571,38 @@ fn triangulate_pieces_3d<T: Coord>(
         .collect()
 }
 
-/// Says what the triangulator refused and where in the file.
+/// Which ways out a refusal's message names.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Hints {
+    /// None: with a fill rule only bad numbers are refused, and --lenient does not apply.
+    None,
+    /// --lenient (rings with z, which fill rules do not take).
+    Lenient,
+    /// --fill-rule for rings that cross or overlap, and --lenient.
+    FillRule,
+}
+
+/// Says what the triangulator refused and where in the file, and what would take it.
 fn describe_error(
     refusal: &Refusal,
     layout: &Layout,
     precision: Precision,
-    fill_rule: bool,
+    hints: Hints,
 ) -> String {
     let vertex = |v: usize| layout.describe_vertex(v + refusal.vertex_offset);
     let ring = |r: usize| layout.describe_ring(r + refusal.ring_offset);
-    // with a fill rule only bad numbers are refused, and --lenient does not apply
-    let hint = if fill_rule {
-        ""
-    } else {
-        " (--lenient makes the best of it)"
+    // (bad numbers: lenient mode drops them; rings that cross or overlap: a fill rule
+    // reads them exactly, lenient mode makes the best of them)
+    let (hint, geometry) = match hints {
+        Hints::None => ("", ""),
+        Hints::Lenient => (
+            " (--lenient makes the best of it)",
+            " (--lenient makes the best of it)",
+        ),
+        Hints::FillRule => (
+            " (--lenient makes the best of it)",
+            " (--fill-rule even-odd fills what the rings enclose, splitting edges where they cross; --lenient makes the best of it without adding vertices)",
+        ),
     };
     match refusal.error {
         Error::NonFinite { vertex: v } => {
@@ -597,7 +622,7 @@ fn describe_error(
         ),
         Error::EdgesCross { edge_a, edge_b, .. } => {
             format!(
-                "edges cross: the edge from {} and the edge from {}{hint}",
+                "edges cross: the edge from {} and the edge from {}{geometry}",
                 vertex(edge_a),
                 vertex(edge_b)
             )
@@ -607,7 +632,7 @@ fn describe_error(
                 .locate(v + refusal.vertex_offset)
                 .map_or(v, |at| at.vertex);
             format!(
-                "{} overlaps another ring: it lies on that ring's boundary (e.g. at vertex {corner}) and would cover its inside twice{hint}",
+                "{} overlaps another ring: it lies on that ring's boundary (e.g. at vertex {corner}) and would cover its inside twice{geometry}",
                 ring(r)
             )
         }
@@ -619,13 +644,13 @@ fn describe_error(
         } => {
             if ring_a == ring_b {
                 format!(
-                    "{} crosses itself at {}, where it passes twice{hint}",
+                    "{} crosses itself at {}, where it passes twice{geometry}",
                     ring(ring_a),
                     vertex(v)
                 )
             } else {
                 format!(
-                    "{} and {} cross each other at {}, where both pass{hint}",
+                    "{} and {} cross each other at {}, where both pass{geometry}",
                     ring(ring_a),
                     ring(ring_b),
                     vertex(v)
@@ -634,9 +659,13 @@ fn describe_error(
         }
         Error::HoleOutside { ring: r } => {
             format!(
-                "{} is a hole outside its outer ring, or inside another hole{hint}",
+                "{} is a hole outside its outer ring, or inside another hole{geometry}",
                 ring(r)
             )
+        }
+        // rings that wind both ways or twice: the triangulator's own words, and a way out
+        ref other @ (Error::LobesWindOpposite { .. } | Error::RingWindsTwice { .. }) => {
+            format!("{other}{geometry}")
         }
         // The rest are not about a place in the file (ring starts are built here), or are
         // bugs of the triangulator; its own words say it best.
@@ -865,15 +894,22 @@ mod tests {
             vertex_offset: 4,
             ring_offset: 1,
         };
-        let message = describe_error(&refusal, &layout, Precision::F64, false);
+        let message = describe_error(&refusal, &layout, Precision::F64, Hints::FillRule);
         assert!(message.contains("polygon 1, ring 1, vertex 1"), "{message}");
         assert!(message.contains("polygon 1, ring 0, vertex 0"), "{message}");
+        // the ways out: a fill rule and lenient mode for rings in the plane, lenient
+        // mode alone for rings with z, none with a fill rule already
+        assert!(message.contains("--fill-rule even-odd") && message.contains("--lenient"));
+        let message = describe_error(&refusal, &layout, Precision::F64, Hints::Lenient);
+        assert!(!message.contains("--fill-rule") && message.contains("--lenient"));
+        let message = describe_error(&refusal, &layout, Precision::F64, Hints::None);
+        assert!(!message.contains("--fill-rule") && !message.contains("--lenient"));
         let refusal = Refusal {
             error: Error::HoleOutside { ring: 1 },
             vertex_offset: 4,
             ring_offset: 1,
         };
-        let message = describe_error(&refusal, &layout, Precision::F64, false);
+        let message = describe_error(&refusal, &layout, Precision::F64, Hints::FillRule);
         assert!(
             message.starts_with("polygon 1, ring 1 is a hole"),
             "{message}"
@@ -887,7 +923,7 @@ mod tests {
             vertex_offset: 4,
             ring_offset: 1,
         };
-        let message = describe_error(&refusal, &layout, Precision::F64, false);
+        let message = describe_error(&refusal, &layout, Precision::F64, Hints::FillRule);
         assert!(
             message.starts_with("polygon 1, ring 0 and polygon 1, ring 1 cross each other at polygon 1, ring 1, vertex 2"),
             "{message}"
@@ -938,7 +974,7 @@ mod tests {
             vertex_offset: 0,
             ring_offset: 0,
         };
-        let message = describe_error(&refusal, &layout, Precision::F32, false);
+        let message = describe_error(&refusal, &layout, Precision::F32, Hints::FillRule);
         assert_eq!(
             message,
             "ring 0, vertex 1: coordinate out of f32 range (--lenient makes the best of it)"

@@ -391,6 +391,7 @@ fn bow_tie_is_refused_strictly_and_repaired_leniently() {
         "{message}"
     );
     assert!(message.contains("--lenient"), "{message}");
+    assert!(message.contains("--fill-rule even-odd"), "{message}");
 
     let (json, stderr) = triangulate(&file, &["--lenient"]);
     assert!(!triangles(&json).is_empty());

@@ -30,7 +30,10 @@
 //! Rings may come in any order and winding ([`Nesting::Auto`](crate::Nesting::Auto), the
 //! default, decides holes by containment); a closing point repeating the first is dropped.
 //! Triangles are counter-clockwise (y up). A [`MultiPolygon`]'s members are triangulated
-//! one by one (each refused member refuses the whole, with its error).
+//! one by one (each refused member refuses the whole, with its error). With a fill rule
+//! ([`Options::with_fill_rule`]) the polygons may cross themselves: the points added
+//! where edges cross are corners of the triangles, and a [`Triangulation`] lists them
+//! after each polygon's own vertices.
 
 use geo_types::{Coord as GeoCoord, CoordFloat, LineString, MultiPolygon, Polygon, Rect, Triangle};
 
@@ -41,7 +44,9 @@ use crate::{Error, Options, Triangulator};
 /// triples into them (counter-clockwise, y up).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Triangulation<T> {
-    /// The vertices, ring after ring, without closing points.
+    /// The vertices, ring after ring, without closing points; with a fill rule, each
+    /// polygon's crossing points added after its own vertices
+    /// ([`Triangulator::added_vertices`]).
     pub vertices: Vec<[T; 2]>,
     /// Index triples into `vertices`.
     pub triangles: Vec<[u32; 3]>,
@@ -133,6 +138,12 @@ fn add_polygon<T: CoordFloat + Coord>(
     let offset = u32::try_from(first).map_err(|_| Error::TooManyVertices { count: first })?;
     let mut out = Vec::new();
     tri.triangulate(&mesh.vertices[first..], &ring_starts, options, &mut out)?;
+    // (with a fill rule, the crossing points added: the triangles index them after the
+    // polygon's own vertices)
+    mesh.vertices.extend_from_slice(tri.added_vertices());
+    u32::try_from(mesh.vertices.len()).map_err(|_| Error::TooManyVertices {
+        count: mesh.vertices.len(),
+    })?;
     mesh.triangles
         .extend(out.iter().map(|t| t.map(|i| i + offset)));
     Ok(())
@@ -183,6 +194,35 @@ mod tests {
         assert_eq!(mesh.vertices.len(), 7);
         assert_eq!(mesh.triangles.len(), 3);
         assert!(mesh.triangles[2].iter().all(|&i| i >= 4));
+    }
+
+    /// With a fill rule, each member's crossing points follow its own vertices, and the
+    /// triangles index them there: a bow tie's two halves meet at its added centre, and
+    /// a square after it keeps its own indices.
+    #[test]
+    fn added_vertices_follow_each_member_s_own() {
+        let bow_tie: Polygon<f64> =
+            polygon![(x: 0., y: 0.), (x: 4., y: 4.), (x: 4., y: 0.), (x: 0., y: 4.)];
+        let square: Polygon<f64> =
+            polygon![(x: 5., y: 0.), (x: 6., y: 0.), (x: 6., y: 1.), (x: 5., y: 1.)];
+        let options = Options::default().with_fill_rule(crate::FillRule::EvenOdd);
+        let t = bow_tie
+            .triangles(&options)
+            .expect("even-odd takes a bow tie");
+        assert_eq!(t.len(), 2);
+        assert_eq!(t.iter().map(area).sum::<f64>(), 8.0);
+        assert!(t
+            .iter()
+            .all(|t| t.to_array().contains(&coord! { x: 2.0, y: 2.0 })));
+        let mesh = MultiPolygon(vec![bow_tie, square])
+            .triangulation(&options)
+            .expect("two members");
+        // the bow tie's 4 vertices and its centre, then the square's 4
+        assert_eq!(mesh.vertices.len(), 9);
+        assert_eq!(mesh.vertices[4], [2.0, 2.0]);
+        assert_eq!(mesh.triangles.len(), 4);
+        assert!(mesh.triangles[..2].iter().all(|t| t.contains(&4)));
+        assert!(mesh.triangles[2..].iter().flatten().all(|&i| i >= 5));
     }
 
     #[test]

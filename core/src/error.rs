@@ -111,6 +111,17 @@ pub enum Error {
         /// The vertex furthest from the plane.
         vertex: usize,
     },
+    /// A 3D polygon ([`Triangulator::triangulate_3d`](crate::Triangulator::triangulate_3d))
+    /// whose edges cross, with a fill rule (or `Strategy::Seidel` in lenient mode): the
+    /// vertex added where they cross would have no z for the triangles to index.
+    /// Triangulate the polygon's projection in 2D to have the crossing points, or take
+    /// lenient mode without a fill rule, which adds none.
+    CrossingIn3d {
+        /// The two crossing edges, each named by the input vertex it starts at.
+        edge_a: usize,
+        /// See `edge_a`.
+        edge_b: usize,
+    },
     /// A coordinate is too large or too small for exact computation (strict mode): without
     /// a fill rule, a magnitude of 2⁵⁰⁰ or more or, nonzero, below 2⁻⁴⁸⁰, where orientation
     /// signs would overflow or lose bits; with a fill rule, above 2¹⁰⁰ or, nonzero, below
@@ -190,6 +201,10 @@ impl fmt::Display for Error {
             Error::NotPlanar { vertex } => write!(
                 f,
                 "the polygon is not planar: vertex {vertex} lies off its plane by more than the tolerance"
+            ),
+            Error::CrossingIn3d { edge_a, edge_b } => write!(
+                f,
+                "the edges from vertex {edge_a} and from vertex {edge_b} cross: a fill rule adds a vertex there, which a 3D polygon's triangles cannot index (it has no z)"
             ),
             Error::CoordinateRange { vertex } => write!(
                 f,

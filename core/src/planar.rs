@@ -62,8 +62,9 @@ impl<T: Coord> Triangulator<T> {
     ///
     /// # Errors
     ///
-    /// Those of [`Triangulator::triangulate`] on the projection, and in strict mode
-    /// [`Error::NotPlanar`] for a polygon further from planar than [`PLANAR_TOLERANCE`].
+    /// Those of [`Triangulator::triangulate`] on the projection, in strict mode
+    /// [`Error::NotPlanar`] for a polygon further from planar than [`PLANAR_TOLERANCE`],
+    /// and [`Error::CrossingIn3d`] where a fill rule would add a vertex (crossing edges).
     pub fn triangulate_3d(
         &mut self,
         vertices: &[[T; 3]],
@@ -86,6 +87,12 @@ impl<T: Coord> Triangulator<T> {
         // clockwise in (u, v) is counter-clockwise in 3D
         let fill = |flat: &mut Vec<[T; 2]>| flat.extend(vertices.iter().map(|p| [p[u], p[v]]));
         let report = self.triangulate_filled(fill, ring_starts, options, out)?;
+        // (a crossing point would have no z)
+        if let Some(added) = report.added.first() {
+            let [edge_a, edge_b] = added.edges.map(|e| e as usize);
+            out.clear();
+            return Err(Error::CrossingIn3d { edge_a, edge_b });
+        }
         if projection.normal[projection.dropped] < 0.0 {
             // the outer ring turns clockwise seen from the positive axis: so must the
             // triangles
@@ -161,7 +168,7 @@ mod tests {
     use super::*;
 
     /// The wall with a window, mapped into 3D by `place` (from plane coordinates).
-    fn wall(place: impl Fn(f64, f64) -> [f64; 3]) -> Vec<[f64; 3]> {
+    pub(super) fn wall(place: impl Fn(f64, f64) -> [f64; 3]) -> Vec<[f64; 3]> {
         [
             (0.0, 0.0),
             (6.0, 0.0),
@@ -272,6 +279,44 @@ mod tests {
 mod garbage {
     use super::*;
     use crate::testing::random;
+
+    /// With a fill rule, a 3D polygon whose edges cross is refused (a crossing point has
+    /// no z), naming two crossing edges, and leaves no triangles; one whose edges do not
+    /// cross is triangulated, nothing added; lenient mode without a fill rule adds none.
+    #[test]
+    fn crossing_edges_in_3d_add_no_vertex() {
+        // (lobes of unequal areas, so that the normal points along x)
+        let bow_tie: [[f64; 3]; 4] = [
+            [0.0, 0.0, 1.0],
+            [0.0, 4.0, 7.0],
+            [0.0, 4.0, 1.0],
+            [0.0, 0.0, 5.0],
+        ];
+        let even_odd = Options::new().with_fill_rule(crate::FillRule::EvenOdd);
+        let mut tri = Triangulator::<f64>::new();
+        let mut out = vec![[0, 1, 2]];
+        let refused = tri.triangulate_3d(&bow_tie, &[0], &even_odd, &mut out);
+        assert_eq!(
+            refused.err(),
+            Some(Error::CrossingIn3d {
+                edge_a: 0,
+                edge_b: 2
+            })
+        );
+        assert!(out.is_empty());
+        let seidel = Options::new()
+            .with_strategy(crate::Strategy::Seidel)
+            .with_lenient(true);
+        let refused = tri.triangulate_3d(&bow_tie, &[0], &seidel, &mut out);
+        assert!(matches!(refused, Err(Error::CrossingIn3d { .. })));
+        let lenient = Options::new().with_lenient(true);
+        let made = tri.triangulate_3d(&bow_tie, &[0], &lenient, &mut out);
+        assert!(made.is_ok_and(|(r, _)| r.added.is_empty()));
+        assert!(out.iter().flatten().all(|&v| v < 4));
+        let w = super::tests::wall(|s, t| [s, 1.0, t]);
+        let made = tri.triangulate_3d(&w, &[0, 4], &even_odd, &mut out);
+        assert!(made.is_ok_and(|(r, _)| r.triangles == 8 && r.added.is_empty()));
+    }
 
     /// Whatever the input — NaN, infinities, huge and tiny values, repeated points, bad
     /// ring starts — `triangulate_3d` returns, and a result's triangles index the input.

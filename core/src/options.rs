@@ -14,7 +14,9 @@ pub enum Strategy {
     /// the same triangles), then monotone pieces triangulated in linear time: near-linear
     /// on every input, where ear clipping can go quadratic (stars, pinwheels). Triangulates
     /// the even–odd region of the rings — for valid input, the polygon with its holes
-    /// (strict mode still refuses invalid input) — or, with a fill rule, that rule's region.
+    /// (strict mode still refuses invalid input; lenient mode reads crossing rings by
+    /// even–odd, adding vertices where edges cross, as a fill rule does) — or, with a fill
+    /// rule, that rule's region.
     Seidel,
 }
 

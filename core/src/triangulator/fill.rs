@@ -19,8 +19,10 @@ pub(crate) struct Scratch {
     seidel: seidel::Scratch,
     /// Which output vertices the triangles use.
     used: Vec<bool>,
-    /// The unused input vertices' positions, sorted, and whether a used vertex holds each.
+    /// The unused input vertices' positions, once each, and whether a used vertex holds
+    /// each; and the table that finds them by position.
     unused: Vec<([f64; 2], bool)>,
+    table: Vec<u32>,
     /// Checked input for Seidel: each pool node's position's first vertex (for nodes at
     /// shared positions), the rings, and the edges between shared positions.
     canon: Vec<u32>,
@@ -501,34 +503,66 @@ fn report_unused_input<T: Coord>(
     mark_used(&mut fs.used, vertices.len(), out);
     let used = &fs.used;
     let point = |i: usize| vertices[i].map(|c| c.to_f64() + 0.0);
-    // the unused vertices' positions, sorted, once each, marked where a used vertex is
+    // the unused vertices' positions, once each, in an open-addressing table, marked
+    // where a used vertex is (each used vertex looks its position up: most find an
+    // empty slot at once)
     let unused = &mut fs.unused;
     unused.clear();
-    let positions = (0..vertices.len()).filter(|&i| !used[i]);
-    unused.extend(positions.map(|i| (point(i), false)));
-    let order = |a: &[f64; 2], b: &[f64; 2]| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1]));
-    if !unused.is_empty() {
-        unused.sort_unstable_by(|a, b| order(&a.0, &b.0));
-        unused.dedup_by(|a, b| order(&a.0, &b.0).is_eq());
+    let count = used.iter().filter(|&&u| !u).count();
+    if count > 0 {
+        let size = (2 * count).next_power_of_two();
+        let table = &mut fs.table;
+        table.clear();
+        table.resize(size, NONE);
+        for i in (0..vertices.len()).filter(|&i| !used[i]) {
+            let p = point(i);
+            let slot = find_slot(table, unused, p);
+            if table[slot] == NONE {
+                table[slot] = unused.len() as u32;
+                unused.push((p, false));
+            }
+        }
         for i in (0..vertices.len()).filter(|&i| used[i]) {
             let p = point(i);
-            if let Ok(k) = unused.binary_search_by(|u| order(&u.0, &p)) {
-                unused[k].1 = true;
+            let k = table[find_slot(table, unused, p)];
+            if k != NONE {
+                unused[k as usize].1 = true;
             }
         }
     }
-    let unused = &*unused;
+    let (unused, table) = (&*unused, &fs.table);
     list_unused(dropped, used, ring_starts, |i| {
-        let p = point(i);
-        let held = unused
-            .binary_search_by(|u| order(&u.0, &p))
-            .is_ok_and(|k| unused[k].1);
-        if held {
+        let k = table[find_slot(table, unused, point(i))];
+        if unused.get(k as usize).is_some_and(|u| u.1) {
             DropReason::Coincident
         } else {
             DropReason::OffBoundary
         }
     });
+}
+
+/// No entry in [`report_unused_input`]'s table.
+const NONE: u32 = u32::MAX;
+
+/// The slot of `table` (a power of two long, linear probing) that holds position `p` of
+/// `unused`, or the empty slot where it would go.
+fn find_slot(table: &[u32], unused: &[([f64; 2], bool)], p: [f64; 2]) -> usize {
+    let bits = table.len().trailing_zeros();
+    // (the bits of both coordinates mixed, the product's top bits taken: its low bits
+    // see only the factors' low bits, which round coordinates leave zero)
+    let mix = (p[0].to_bits() ^ p[1].to_bits().rotate_left(29)).wrapping_mul(0x9e37_79b9_7f4a_7c15);
+    let mut slot = if bits == 0 {
+        0
+    } else {
+        (mix >> (64 - bits)) as usize
+    };
+    loop {
+        let k = table[slot];
+        if k == NONE || unused[k as usize].0 == p {
+            return slot;
+        }
+        slot = (slot + 1) & (table.len() - 1);
+    }
 }
 
 /// `Strategy::Seidel` without a fill rule, on input strict mode has checked (`load`,

@@ -9,6 +9,7 @@ use crate::context::Context;
 use crate::geom::{orient2d, Coord, Orientation, Point, SnapGrid};
 use crate::report::{Added, DropReason, Dropped};
 use crate::stages::{clean, load, resolve, seidel, small};
+use crate::structures::positions;
 use crate::{Error, FillRule, Nesting, Options, Strategy};
 
 /// The fill path's buffers.
@@ -510,59 +511,33 @@ fn report_unused_input<T: Coord>(
     unused.clear();
     let count = used.iter().filter(|&&u| !u).count();
     if count > 0 {
-        let size = (2 * count).next_power_of_two();
         let table = &mut fs.table;
-        table.clear();
-        table.resize(size, NONE);
+        positions::reset_table(table, count);
         for i in (0..vertices.len()).filter(|&i| !used[i]) {
             let p = point(i);
-            let slot = find_slot(table, unused, p);
-            if table[slot] == NONE {
+            let slot = positions::slot(table, p, |k| unused[k as usize].0);
+            if table[slot] == positions::EMPTY {
                 table[slot] = unused.len() as u32;
                 unused.push((p, false));
             }
         }
         for i in (0..vertices.len()).filter(|&i| used[i]) {
             let p = point(i);
-            let k = table[find_slot(table, unused, p)];
-            if k != NONE {
+            let k = table[positions::slot(table, p, |k| unused[k as usize].0)];
+            if k != positions::EMPTY {
                 unused[k as usize].1 = true;
             }
         }
     }
     let (unused, table) = (&*unused, &fs.table);
     list_unused(dropped, used, ring_starts, |i| {
-        let k = table[find_slot(table, unused, point(i))];
+        let k = table[positions::slot(table, point(i), |k| unused[k as usize].0)];
         if unused.get(k as usize).is_some_and(|u| u.1) {
             DropReason::Coincident
         } else {
             DropReason::OffBoundary
         }
     });
-}
-
-/// No entry in [`report_unused_input`]'s table.
-const NONE: u32 = u32::MAX;
-
-/// The slot of `table` (a power of two long, linear probing) that holds position `p` of
-/// `unused`, or the empty slot where it would go.
-fn find_slot(table: &[u32], unused: &[([f64; 2], bool)], p: [f64; 2]) -> usize {
-    let bits = table.len().trailing_zeros();
-    // (the bits of both coordinates mixed, the product's top bits taken: its low bits
-    // see only the factors' low bits, which round coordinates leave zero)
-    let mix = (p[0].to_bits() ^ p[1].to_bits().rotate_left(29)).wrapping_mul(0x9e37_79b9_7f4a_7c15);
-    let mut slot = if bits == 0 {
-        0
-    } else {
-        (mix >> (64 - bits)) as usize
-    };
-    loop {
-        let k = table[slot];
-        if k == NONE || unused[k as usize].0 == p {
-            return slot;
-        }
-        slot = (slot + 1) & (table.len() - 1);
-    }
 }
 
 /// `Strategy::Seidel` without a fill rule, on input strict mode has checked (`load`,

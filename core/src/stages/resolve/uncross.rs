@@ -42,6 +42,7 @@ use super::{
 };
 use crate::geom::{cmp_around, in_range, on_ray, within_box, Point, SnapGrid};
 use crate::report::Added;
+use crate::structures::positions;
 use crate::{Error, FillRule};
 
 /// No edge or vertex.
@@ -204,33 +205,17 @@ pub(crate) fn rewind(r: &mut Resolve, rule: FillRule) -> bool {
 /// How many of the points `hot` repeat a point before them (found in an open-addressing
 /// table of indices by position), counted up to one past `most`.
 fn repeated_positions(table: &mut Vec<u32>, hot: &[[f64; 2]], most: usize) -> usize {
-    let size = (2 * hot.len()).next_power_of_two().max(2);
-    let bits = size.trailing_zeros();
-    table.clear();
-    table.resize(size, NONE);
+    positions::reset_table(table, hot.len());
     let mut repeated = 0;
-    for (v, p) in hot.iter().enumerate() {
-        // (the bits of both coordinates mixed; equal positions, −0.0 read as +0.0 by the
-        // caller, have equal bits)
-        let mix =
-            (p[0].to_bits() ^ p[1].to_bits().rotate_left(29)).wrapping_mul(0x9e37_79b9_7f4a_7c15);
-        // (the top bits: a product's low bits see only the factors' low bits, which
-        // round coordinates leave zero)
-        let mut i = (mix >> (64 - bits)) as usize;
-        loop {
-            let w = table[i];
-            if w == NONE {
-                table[i] = v as u32;
-                break;
+    for (v, &p) in hot.iter().enumerate() {
+        let slot = positions::slot(table, p, |w| hot[w as usize]);
+        if table[slot] == positions::EMPTY {
+            table[slot] = v as u32;
+        } else {
+            repeated += 1;
+            if repeated > most {
+                return repeated;
             }
-            if hot[w as usize] == *p {
-                repeated += 1;
-                if repeated > most {
-                    return repeated;
-                }
-                break;
-            }
-            i = (i + 1) & (size - 1);
         }
     }
     repeated

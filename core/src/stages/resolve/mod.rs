@@ -12,14 +12,24 @@
 //!    *hot pixels* are the pixels (the points rounding to a grid point) of the input's
 //!    vertices and of the rounded crossings. Each edge becomes the polyline through the
 //!    centres of every hot pixel it meets ([`SnapGrid::meets_pixel`]), in order along the
-//!    edge. The rounded arrangement is topologically consistent with the exact one: it is
-//!    what collapsing every hot pixel to its centre does to the exact arrangement, a
-//!    continuous deformation in which no vertex passes through an edge, so no two rounded
-//!    fragments cross and every face keeps its winding number (the argument is Guibas
-//!    and Marimont's; it uses only that the pixels are disjoint axis-parallel boxes, each
-//!    containing its centre, of a grid of rows and columns — which the pixels of a
-//!    floating-point grid are, though their sizes vary). Each point moves by less than
+//!    edge. On a grid of equal pixels the rounded arrangement is topologically
+//!    consistent with the exact one (Guibas and Marimont): a fragment stays within a
+//!    pixel's reach of its edge, where no hot centre lies that the edge's own path does
+//!    not visit. A floating-point grid's pixels differ in size (they double from one
+//!    binade to the next, and differ between the axes), so a fragment between two tall
+//!    pixels can pass on the wrong side of a short one's centre, and cross an edge from
+//!    it (found by the `fill_rules` fuzz target). Each point still moves by less than
 //!    its pixel's diagonal. Without crossings nothing is rounded and no vertex is added.
+//!
+//!    **2b. Again where fragments cross.** After splitting (step 3), the winding sweep
+//!    proves the fragments planar (`verify`, as Shamos and Hoey's sweep does). Where it
+//!    fails, fragments cross properly (splitting left no other way to meet): their
+//!    crossings are found, rounded and made hot, and every fragment is snapped as the
+//!    edges were ([`snap_again`]). It ends: each crossing point x rounds to some hot h,
+//!    so both fragments through x meet h's pixel and at least one gains h on its path
+//!    (both ending at h would not cross there); the paths only grow, and there are
+//!    finitely many grid points in the input's box. Each round moves a fragment by less
+//!    than a pixel's diagonal (one round, in every case found).
 //! 3. **Splitting** at vertices lying exactly on a fragment (a vertex on another ring's
 //!    edge, collinear overlaps, and the rare fragment that snap rounding drew across a
 //!    hot centre): pure subdivision, no point moves. Fragments between the same two
@@ -48,14 +58,19 @@ use cells::Cells;
 
 use crate::geom::{crosses, in_range, on_segment, Point, SnapGrid};
 use crate::report::Added;
+use crate::structures::positions;
 use crate::{Error, FillRule};
 
-/// An input edge: its start vertex (input index) and its ends as hot points.
+/// An edge (of the input, or a fragment of one): its ends as hot points, its net count
+/// from `a` to `b` (how many times the rings run that way, less the other way), and the
+/// input edge it lies on, named by its start vertex (the short way, which reports its
+/// crossings before it splits, leaves that [`u32::MAX`] on its fragments).
 #[derive(Clone, Copy, Debug)]
-struct Edge {
+pub(crate) struct Edge {
     from: u32,
     a: u32,
     b: u32,
+    count: i32,
 }
 
 /// The stage's buffers and its result.
@@ -81,13 +96,18 @@ pub(crate) struct Scratch {
     /// The pairs of edges found crossing (each once after sorting).
     pairs: Vec<(u32, u32)>,
     on_edge: Vec<u32>,
-    /// Fragments: hot points `(lo, hi)` and the net count from lo to hi.
-    fragments: Vec<(u32, u32, i32)>,
+    /// The fragments of the edges (after merging: from the lower hot point to the
+    /// higher, no two between the same points, no net count zero).
+    fragments: Vec<Edge>,
     /// Twice the edges' mean extent (the longer side of an edge's box): the widest cell
     /// of the grids.
     typical: f64,
     /// The fragments being split at vertices (then the buffer of the ones before).
-    split: Vec<(u32, u32, i32)>,
+    split: Vec<Edge>,
+    /// Every hot point by position, where snap rounding runs again.
+    table: Vec<u32>,
+    /// How many times snap rounding ran on the last input (0 where no edges cross).
+    snaps: u32,
     winding: winding::Scratch,
     trace: trace::Scratch,
     uncross: uncross::Scratch,
@@ -133,18 +153,24 @@ pub(crate) fn resolve(
     } else {
         find_crossings(s, lo, hi, grid, reach, None, [usize::MAX; 3]);
     }
-    add_crossings(s, vertices.len(), added)?;
+    add_crossings(s, vertices.len(), added, false)?;
+    s.snaps = 0;
     if s.crossings.is_empty() {
         s.fragments.clear();
-        for e in &s.edges {
-            s.fragments.push((e.a, e.b, 1));
-        }
+        s.fragments.extend_from_slice(&s.edges);
     } else {
         snap(s, lo, hi, grid, reach);
     }
-    split_at_vertices(s, lo, hi, reach);
-    merge_fragments(&mut s.fragments);
-    winding::boundary(&mut s.winding, &s.hot, &s.fragments, rule, false);
+    loop {
+        split_at_vertices(s, lo, hi, reach);
+        merge_fragments(&mut s.fragments);
+        // (planar without crossings: the edges meet only at vertices, now split there)
+        let verify = !s.crossings.is_empty();
+        if winding::boundary(&mut s.winding, &s.hot, &s.fragments, rule, verify) {
+            break;
+        }
+        snap_again(s, lo, hi, grid, reach, vertices.len(), added)?;
+    }
     trace::rings(&mut s.trace, &s.hot, &s.winding.boundary)?;
     take_traced(s);
     Ok(())
@@ -218,6 +244,7 @@ fn collect_edges(s: &mut Scratch, vertices: &[[f64; 2]], ring_starts: &[usize]) 
                     from: i as u32,
                     a,
                     b,
+                    count: 1,
                 });
             }
         }
@@ -437,19 +464,39 @@ fn meet_at_vertices(
 }
 
 /// Makes the rounded crossings hot points; those at new positions become added vertices.
-fn add_crossings(s: &mut Scratch, inputs: usize, added: &mut Vec<Added>) -> Result<(), Error> {
+/// `again`: hot points were added before (else the hot points are the input's positions,
+/// sorted).
+fn add_crossings(
+    s: &mut Scratch,
+    inputs: usize,
+    added: &mut Vec<Added>,
+    again: bool,
+) -> Result<(), Error> {
     s.crossings
         .sort_unstable_by(|x, y| x.partial_cmp(y).unwrap_or(core::cmp::Ordering::Equal));
-    let input_points = s.hot.len();
+    let earlier = s.hot.len();
+    if again {
+        positions::reset_table(&mut s.table, earlier + s.crossings.len());
+        for h in 0..earlier as u32 {
+            let i = positions::slot(&s.table, s.hot[h as usize], |k| s.hot[k as usize]);
+            s.table[i] = h;
+        }
+    }
     let mut last: Option<[f64; 2]> = None;
     for &(p, e1, e2) in &s.crossings {
         if last == Some(p) {
             continue;
         }
         last = Some(p);
-        let known = s.hot[..input_points]
-            .binary_search_by(|q| q.partial_cmp(&p).unwrap_or(core::cmp::Ordering::Equal))
-            .is_ok();
+        // (−0.0 is no coordinate here: `distinct_positions` and the rounding give +0.0)
+        let known = if again {
+            let i = positions::slot(&s.table, p, |k| s.hot[k as usize]);
+            s.table[i] != positions::EMPTY
+        } else {
+            (s.hot[..earlier])
+                .binary_search_by(|q| q.partial_cmp(&p).unwrap_or(core::cmp::Ordering::Equal))
+                .is_ok()
+        };
         if known {
             continue;
         }
@@ -468,6 +515,7 @@ fn add_crossings(s: &mut Scratch, inputs: usize, added: &mut Vec<Added>) -> Resu
 
 /// Snap rounding: each edge through the centres of the hot pixels it meets.
 fn snap(s: &mut Scratch, lo: [f64; 2], hi: [f64; 2], grid: SnapGrid, reach: f64) {
+    s.snaps += 1;
     s.cells.reset(lo, hi, s.hot.len(), 8.0 * reach, s.typical);
     s.cells.fill_points(&s.hot);
     s.fragments.clear();
@@ -485,8 +533,31 @@ fn snap(s: &mut Scratch, lo: [f64; 2], hi: [f64; 2], grid: SnapGrid, reach: f64)
                 }
             }
         });
-        push_path(&mut s.fragments, &mut s.on_edge, &s.hot, e.a, e.b);
+        push_path(&mut s.fragments, &mut s.on_edge, &s.hot, *e);
     }
+}
+
+/// Snap rounding again where the fragments cross (step 2b): their crossings are rounded
+/// and made hot, and every fragment is snapped as the edges were.
+fn snap_again(
+    s: &mut Scratch,
+    lo: [f64; 2],
+    hi: [f64; 2],
+    grid: SnapGrid,
+    reach: f64,
+    inputs: usize,
+    added: &mut Vec<Added>,
+) -> Result<(), Error> {
+    core::mem::swap(&mut s.edges, &mut s.fragments);
+    s.typical = typical_extent(&s.edges, &s.hot);
+    find_crossings(s, lo, hi, grid, reach, None, [usize::MAX; 3]);
+    if s.crossings.is_empty() {
+        // (split and merged, fragments that meet other than at their ends cross)
+        return Err(Error::Internal { stage: "resolve" });
+    }
+    add_crossings(s, inputs, added, true)?;
+    snap(s, lo, hi, grid, reach);
+    Ok(())
 }
 
 /// Whether the pixel of grid point `q` may meet segment a–b (a float filter: `false`
@@ -508,15 +579,10 @@ fn near(a: [f64; 2], b: [f64; 2], q: [f64; 2], w: f64) -> bool {
     det.abs() <= (dx.abs() + dy.abs()) * w * 2.0 + err + w * f64::EPSILON
 }
 
-/// Adds the fragments of the path from hot point `a` through `mid` (in any order) to `b`,
-/// sorting `mid` along the direction a → b.
-fn push_path(
-    fragments: &mut Vec<(u32, u32, i32)>,
-    mid: &mut Vec<u32>,
-    hot: &[[f64; 2]],
-    a: u32,
-    b: u32,
-) {
+/// Adds the fragments of the path along `e` from hot point `e.a` through `mid` (in any
+/// order) to `e.b`, sorting `mid` along the direction a → b.
+fn push_path(fragments: &mut Vec<Edge>, mid: &mut Vec<u32>, hot: &[[f64; 2]], e: Edge) {
+    let (a, b) = (e.a, e.b);
     let (pa, pb) = (hot[a as usize], hot[b as usize]);
     let sx = if pb[0] >= pa[0] { 1.0 } else { -1.0 };
     let sy = if pb[1] >= pa[1] { 1.0 } else { -1.0 };
@@ -532,7 +598,7 @@ fn push_path(
     let mut prev = a;
     for &m in mid.iter().chain(core::iter::once(&b)) {
         if m != prev {
-            fragments.push((prev, m, 1));
+            fragments.push(Edge { a: prev, b: m, ..e });
             prev = m;
         }
     }
@@ -549,7 +615,8 @@ fn split_at_vertices(s: &mut Scratch, lo: [f64; 2], hi: [f64; 2], reach: f64) {
     let pad = 8.0 * reach;
     let mut out = core::mem::take(&mut s.split);
     out.clear();
-    for &(a, b, _) in &s.fragments {
+    for &f in &s.fragments {
+        let (a, b) = (f.a, f.b);
         let (pa, pb) = (s.hot[a as usize], s.hot[b as usize]);
         s.on_edge.clear();
         frame.along(pa, pb, pad, |c| {
@@ -560,7 +627,7 @@ fn split_at_vertices(s: &mut Scratch, lo: [f64; 2], hi: [f64; 2], reach: f64) {
                 }
             }
         });
-        push_path(&mut out, &mut s.on_edge, &s.hot, a, b);
+        push_path(&mut out, &mut s.on_edge, &s.hot, f);
     }
     s.split = core::mem::replace(&mut s.fragments, out);
 }
@@ -593,27 +660,27 @@ fn rows(
     first.truncate(n + 1);
 }
 
-/// Merges fragments between the same two points, summing their directions (from the
+/// Merges fragments between the same two points, summing their net counts (from the
 /// lower index to the higher); drops those that cancel.
-fn merge_fragments(fragments: &mut Vec<(u32, u32, i32)>) {
+fn merge_fragments(fragments: &mut Vec<Edge>) {
     for f in fragments.iter_mut() {
-        if f.0 > f.1 {
-            *f = (f.1, f.0, -f.2);
+        if f.a > f.b {
+            (f.a, f.b, f.count) = (f.b, f.a, -f.count);
         }
     }
-    fragments.sort_unstable_by_key(|f| (f.0, f.1));
+    fragments.sort_unstable_by_key(|f| (f.a, f.b));
     let mut out = 0;
     for i in 0..fragments.len() {
         let f = fragments[i];
-        if out > 0 && (fragments[out - 1].0, fragments[out - 1].1) == (f.0, f.1) {
-            fragments[out - 1].2 += f.2;
+        if out > 0 && (fragments[out - 1].a, fragments[out - 1].b) == (f.a, f.b) {
+            fragments[out - 1].count += f.count;
         } else {
             fragments[out] = f;
             out += 1;
         }
     }
     fragments.truncate(out);
-    fragments.retain(|f| f.2 != 0);
+    fragments.retain(|f| f.count != 0);
 }
 
 #[cfg(test)]
@@ -656,24 +723,25 @@ mod tests {
                     (&s.rings, &s.ring_starts)
                 );
             }
-            let mut twice = 0.0;
-            for (i, &start) in s.ring_starts.iter().enumerate() {
-                let end = s.ring_starts.get(i + 1).copied().unwrap_or(s.rings.len());
-                let ring = &s.rings[start..end];
-                assert!(
-                    ring.len() >= 3,
-                    "{rule:?}: a ring of {} vertices",
-                    ring.len()
-                );
-                for j in 0..ring.len() {
-                    let (a, b) = (ring[j], ring[(j + 1) % ring.len()]);
-                    twice += a[0] * b[1] - a[1] * b[0];
-                }
-            }
-            out[k] = twice / 2.0;
+            out[k] = signed_area(&s.rings, &s.ring_starts);
             extra = added.len();
         }
         (out, extra)
+    }
+
+    /// The resolved rings' signed area (each ring of at least three vertices).
+    fn signed_area(rings: &[[f64; 2]], starts: &[usize]) -> f64 {
+        let mut twice = 0.0;
+        for (i, &start) in starts.iter().enumerate() {
+            let end = starts.get(i + 1).copied().unwrap_or(rings.len());
+            let ring = &rings[start..end];
+            assert!(ring.len() >= 3, "a ring of {} vertices", ring.len());
+            for j in 0..ring.len() {
+                let (a, b) = (ring[j], ring[(j + 1) % ring.len()]);
+                twice += a[0] * b[1] - a[1] * b[0];
+            }
+        }
+        twice / 2.0
     }
 
     fn square(x: f64, y: f64, side: f64) -> Vec<[f64; 2]> {
@@ -762,6 +830,105 @@ mod tests {
         // the pentagram's centre pentagon has winding 2: nonzero − even-odd = abs ≥ 2
         assert!((a[1] - a[0] - a[4]).abs() < 1e-9 * a[1], "{a:?}");
         assert!(a[4] > 0.0 && a[0] > a[4] && a[3] == 0.0 && a[2] == a[1]);
+    }
+
+    /// Found by the `fill_rules` fuzz target (collinear overlaps in `f32`): an edge passes
+    /// just outside the pixel of a vertex, which is short (y near 232), between two hot
+    /// points whose pixels are tall (y near 664 and 752); its rounded fragment between
+    /// them crosses an edge from that vertex. Snap rounding runs again on the fragments,
+    /// and every rule's region comes out as with `f64`'s far finer grid, up to the
+    /// rounding.
+    #[test]
+    fn fragments_rounded_across_a_vertex_with_a_smaller_pixel_are_snapped_again() {
+        let rings: [&[[f32; 2]]; 9] = [
+            &[
+                [2131.2954, 1652.4354],
+                [1637.2043, 2549.3467],
+                [-1456.3502, -323.9288],
+            ],
+            &[
+                [7877.8467, -4534.674],
+                [4784.292, -7407.949],
+                [-7202.9014, 5863.18],
+            ],
+            &[
+                [5095.842, -3729.033],
+                [-4238.355, 481.71188],
+                [4913.3003, 846.7947],
+            ],
+            &[
+                [9306.587, 5605.1636],
+                [-6252.457, -6473.3003],
+                [6927.402, 7801.8066],
+            ],
+            &[
+                [1325.6547, -1129.5695],
+                [831.5636, -232.6581],
+                [-65.347786, -726.74915],
+                [-962.25916, -1220.8402],
+                [-468.16812, -2117.7515],
+                [428.74326, -1623.6605],
+            ],
+            &[
+                [2222.566, -635.47845],
+                [1325.6547, -1129.5695],
+                [337.47256, 664.2533],
+                [1234.3839, 1158.3444],
+            ],
+            &[
+                [-2041.7119, 2860.8965],
+                [-2535.803, 3757.8079],
+                [-5226.537, 2275.5347],
+                [-4732.4463, 1378.6233],
+            ],
+            &[
+                [3119.4775, -141.38739],
+                [1143.1133, 3446.258],
+                [-650.70953, 2458.0762],
+                [1325.6547, -1129.5695],
+            ],
+            &[
+                [246.20186, 2952.167],
+                [1143.1133, 3446.258],
+                [1637.2043, 2549.3467],
+                [740.2929, 2055.2556],
+            ],
+        ];
+        let mut vertices = Vec::new();
+        let mut starts = Vec::new();
+        for r in rings {
+            starts.push(vertices.len());
+            vertices.extend(r.iter().map(|p| p.map(f64::from)));
+        }
+        for rule in FillRule::ALL {
+            let mut area = [0.0; 2];
+            for (k, f32) in [true, false].into_iter().enumerate() {
+                let mut s = Scratch::default();
+                let grid = SnapGrid { f32 };
+                resolve(
+                    &mut s,
+                    &vertices,
+                    &starts,
+                    rule,
+                    grid,
+                    false,
+                    &mut Vec::new(),
+                )
+                .unwrap_or_else(|e| panic!("{rule:?}, f32 {f32}: {e:?}"));
+                if f32 {
+                    assert_eq!(s.snaps, 2, "{rule:?}: the first rounding is not planar");
+                }
+                area[k] = signed_area(&s.rings, &s.ring_starts);
+            }
+            // (f32's relative precision is 6·10⁻⁸; the rings cover about 3·10⁸)
+            assert!(area[1] > 1e6, "{rule:?}: {}", area[1]);
+            assert!(
+                (area[0] - area[1]).abs() <= 100.0,
+                "{rule:?}: {} against {}",
+                area[0],
+                area[1]
+            );
+        }
     }
 
     #[test]

@@ -318,6 +318,7 @@ fn split(
                     from: v,
                     a: v,
                     b: w,
+                    count: 1,
                 });
             }
             if w == first {
@@ -571,10 +572,16 @@ fn wind(r: &mut Resolve, s: &mut Scratch, rule: FillRule) -> bool {
         let x = s.around[w][1] as usize;
         let twin_at_a = s.many[a as usize] || s.spot[u] == b;
         let twin_at_b = s.many[b as usize] || s.spot[x] == a;
+        let e = Edge {
+            from: NONE,
+            a,
+            b,
+            count: 1,
+        };
         if twin_at_a && twin_at_b {
-            r.split.push((a, b, 1));
+            r.split.push(e);
         } else {
-            r.fragments.push((a, b, 1));
+            r.fragments.push(e);
         }
     }
     super::merge_fragments(&mut r.split);

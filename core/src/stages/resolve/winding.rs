@@ -95,13 +95,13 @@ fn pt(p: [f64; 2]) -> Point {
 pub(crate) fn boundary(
     s: &mut Scratch,
     hot: &[[f64; 2]],
-    fragments: &[(u32, u32, i32)],
+    fragments: &[super::Edge],
     rule: FillRule,
     verify: bool,
 ) -> bool {
     s.boundary.clear();
     s.edges.clear();
-    for &(a, b, c) in fragments {
+    for &super::Edge { a, b, count: c, .. } in fragments {
         let e = if lex(hot[a as usize], hot[b as usize]) == Ordering::Less {
             Edge {
                 p: a,
@@ -242,8 +242,14 @@ mod tests {
         let square = [(0, 1, 1), (1, 2, 1), (2, 3, 1), (3, 0, 1)];
         let mut s = Scratch::default();
         let mut with = |hot: &[[f64; 2]], extra: &[(u32, u32, i32)]| {
-            let mut fragments = square.to_vec();
-            fragments.extend_from_slice(extra);
+            let mut fragments: Vec<super::super::Edge> = (square.iter().chain(extra))
+                .map(|&(a, b, count)| super::super::Edge {
+                    from: 0,
+                    a,
+                    b,
+                    count,
+                })
+                .collect();
             let mut planar = [false; 2];
             for (k, planar) in planar.iter_mut().enumerate() {
                 if k == 1 {

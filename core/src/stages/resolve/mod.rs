@@ -25,11 +25,17 @@
 //!    proves the fragments planar (`verify`, as Shamos and Hoey's sweep does). Where it
 //!    fails, fragments cross properly (splitting left no other way to meet): their
 //!    crossings are found, rounded and made hot, and every fragment is snapped as the
-//!    edges were ([`snap_again`]). It ends: each crossing point x rounds to some hot h,
-//!    so both fragments through x meet h's pixel and at least one gains h on its path
-//!    (both ending at h would not cross there); the paths only grow, and there are
-//!    finitely many grid points in the input's box. Each round moves a fragment by less
-//!    than a pixel's diagonal (one round, in every case found).
+//!    edges were ([`snap_again`]). It ends. Each edge's path is monotone in x and in y
+//!    (the pixels a segment meets form a staircase, and a fragment meets no pixel whose
+//!    centre lies outside the box of its ends), so it visits a hot point once, and a
+//!    fragment meets the pixel of no other point of its path. A crossing x of fragments
+//!    f and g rounds to a hot h whose pixel both meet, and h ends at most one of them: the
+//!    path of each edge through the other gains h. So the (edge, hot point) incidences
+//!    grow every round, bounded by the edges times the grid points in the input's box
+//!    (crossings inside it round into it). Each round moves a fragment by less than a
+//!    pixel's diagonal; every case found needed one round more. After [`SNAPS`] snaps
+//!    the stage returns `Error::Internal` instead (a guard against a flaw in this
+//!    argument, never reached).
 //! 3. **Splitting** at vertices lying exactly on a fragment (a vertex on another ring's
 //!    edge, collinear overlaps, and the rare fragment that snap rounding drew across a
 //!    hot centre): pure subdivision, no point moves. Fragments between the same two
@@ -537,6 +543,9 @@ fn snap(s: &mut Scratch, lo: [f64; 2], hi: [f64; 2], grid: SnapGrid, reach: f64)
     }
 }
 
+/// How many times snap rounding may run on one input (step 2b: a guard, never reached).
+const SNAPS: u32 = 64;
+
 /// Snap rounding again where the fragments cross (step 2b): their crossings are rounded
 /// and made hot, and every fragment is snapped as the edges were.
 fn snap_again(
@@ -551,7 +560,7 @@ fn snap_again(
     core::mem::swap(&mut s.edges, &mut s.fragments);
     s.typical = typical_extent(&s.edges, &s.hot);
     find_crossings(s, lo, hi, grid, reach, None, [usize::MAX; 3]);
-    if s.crossings.is_empty() {
+    if s.crossings.is_empty() || s.snaps >= SNAPS {
         // (split and merged, fragments that meet other than at their ends cross)
         return Err(Error::Internal { stage: "resolve" });
     }

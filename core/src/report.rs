@@ -52,6 +52,12 @@ pub enum RepairKind {
     ForcedEar,
     /// A piece of the polygon enclosing no area was dropped.
     DegeneratePiece,
+    /// With `Nesting::Auto`, rings lie on each other without crossing (a ring given twice,
+    /// a ring along another's edges inside it: strict mode refuses them as
+    /// `Error::RingsOverlap`), so that containment cannot order them: they were read by
+    /// the even–odd rule, as [`FillRule::EvenOdd`](crate::FillRule::EvenOdd) reads them,
+    /// which adds no vertex where no edges cross. `ring` and `vertex` are 0.
+    ReadEvenOdd,
 }
 
 /// A repair made in lenient mode.

@@ -377,3 +377,52 @@ fn a_refused_call_leaves_no_triangles_behind() {
         assert!(out.is_empty(), "{strategy:?}: {out:?}");
     }
 }
+
+/// Two outer rings overlapping in a triangle T along their edges, and T given twice more
+/// (found by the `raw_rings` fuzz target): strict mode refuses the two copies of T as
+/// overlapping, while reading both as holes of the two outer rings covers each point
+/// once (T has winding 2 − 2 = 0). Containment cannot order rings lying on each other;
+/// lenient mode reads them by even–odd then, with no vertex added (no edges cross), and
+/// says so. The region: the two outer triangles less T, 78 + 90 (before: T covered twice
+/// more, 312).
+#[test]
+fn lenient_reads_rings_lying_on_each_other_by_even_odd() {
+    let t = [[-12.0, -12.0], [-12.0, 0.0], [0.0, 0.0]];
+    let rings: [&[[f64; 2]]; 4] = [
+        &t,
+        &[[13.0, 0.0], [-12.0, -12.0], [-12.0, 0.0]],
+        &t,
+        &[[-12.0, -12.0], [-12.0, 15.0], [0.0, 0.0]],
+    ];
+    let mut vertices = Vec::new();
+    let mut starts = Vec::new();
+    for r in rings {
+        starts.push(vertices.len());
+        vertices.extend_from_slice(r);
+    }
+    let auto = Options::default().with_nesting(Nesting::Auto);
+    assert!(matches!(
+        tri_f64(&vertices, &starts, auto),
+        Err(Error::RingsOverlap { .. })
+    ));
+    for strategy in [Strategy::Fast, Strategy::Quality] {
+        let mut out = Vec::new();
+        let mut tri = Triangulator::<f64>::new();
+        let opts = auto.with_strategy(strategy).with_lenient(true);
+        let report = tri
+            .triangulate(&vertices, &starts, &opts, &mut out)
+            .unwrap();
+        assert!(report.added.is_empty());
+        assert!(report
+            .repairs
+            .iter()
+            .any(|r| r.kind == polytri::RepairKind::ReadEvenOdd));
+        let area: f64 = (out.iter())
+            .map(|t| {
+                let [a, b, c] = t.map(|i| vertices[i as usize]);
+                ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])) / 2.0
+            })
+            .sum();
+        assert_eq!((out.len(), area), (2, 168.0), "{strategy:?}");
+    }
+}

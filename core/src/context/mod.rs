@@ -104,6 +104,11 @@ pub(crate) struct Context {
     /// other, so that the region there counts twice (strict mode refuses them as
     /// `Error::RingsOverlap`; set by `nest`).
     pub rings_doubled: bool,
+    /// Lenient mode: a ring lies on another's boundary, inside it, where strict mode
+    /// refuses it as `Error::RingsOverlap`: two rings each inside the other (which
+    /// lenient mode makes cancel), or depths that do not make one the other's hole (set
+    /// by `nest`).
+    pub rings_overlap: bool,
     /// The input rings `lobes` split (their lobes are the rings after `as_loaded`'s).
     pub lobe_rings: Vec<u32>,
     /// The live edges in a grid, built by `nest` and reused by `bridge`.
@@ -124,6 +129,7 @@ impl Context {
         self.hidden_unchecked = false;
         self.split_lobes = false;
         self.rings_doubled = false;
+        self.rings_overlap = false;
         self.edge_index.invalidate();
     }
 

@@ -266,6 +266,7 @@ fn compute_depths(cx: &mut Context, s: &mut Scratch) -> Result<(), Error> {
         Some(_) => {
             let doubled = |&(b, q): &(u32, u32)| rings[b as usize].depth == rings[q as usize].depth;
             cx.rings_doubled = s.overlaps.iter().any(doubled);
+            cx.rings_overlap = true;
             Ok(())
         }
         None => Ok(()),
@@ -739,7 +740,9 @@ fn depth_by_dropped(cx: &mut Context, s: &mut Scratch, b: usize) -> u32 {
     // of rings cut by `lobes` (the same lobe of two figure eights).
     if cx.lenient {
         let overlaps = &s.overlaps;
+        let before = s.order.len();
         s.order.retain(|&q| !overlaps.contains(&(q, b as u32)));
+        cx.rings_overlap |= s.order.len() < before;
     }
     for &q in &s.order {
         s.overlaps.push((b as u32, q));

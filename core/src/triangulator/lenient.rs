@@ -27,7 +27,7 @@ use super::pipeline::{self, Stages};
 use crate::context::{Context, Ring};
 use crate::crossings::{proof, sweep};
 use crate::geom::{approx_cross, approx_double_area, Coord, Point};
-use crate::report::{Dropped, Repair};
+use crate::report::{Dropped, Repair, RepairKind};
 use crate::stages::bridge::{self, Careful};
 use crate::stages::clip;
 use crate::structures::{Node, NodeId, Pool};
@@ -199,6 +199,49 @@ pub(crate) fn triangulate<T: Coord>(
         polygons,
         holes,
         deviation: best,
+    })
+}
+
+/// Lenient mode, rings read by containment (`Nesting::Auto`) whose edges cross nowhere but
+/// which lie on each other (a ring given twice, a ring along another's edges inside it:
+/// strict mode refuses them as `Error::RingsOverlap`): containment cannot order them, and
+/// the triangles of [`triangulate`] (`made`, in `out`) may cover a region twice. The
+/// even–odd rule reads such rings exactly, as the oracle reads rings by containment, and
+/// adds no vertex where no edges cross: `even_odd` runs it (into its buffer), and its
+/// triangles replace `made`'s when it added no vertex, with a [`RepairKind::ReadEvenOdd`]
+/// repair. Otherwise `made` stands, its report restored.
+pub(crate) fn read_even_odd_where_rings_overlap<T: Coord>(
+    cx: &mut Context,
+    re: &mut Reruns,
+    vertices: &[[T; 2]],
+    made: Outcome,
+    out: &mut Vec<[u32; 3]>,
+    even_odd: impl FnOnce(&mut Context, &mut Reruns, &mut Vec<[u32; 3]>) -> Result<Outcome, Error>,
+) -> Outcome {
+    if !cx.rings_overlap || !cx.crossings.is_empty() {
+        return made;
+    }
+    let area = re.area;
+    copy_into(&mut re.best_dropped, &cx.dropped);
+    copy_into(&mut re.best_repairs, &cx.repairs);
+    let mut alt = core::mem::take(&mut re.alt_out);
+    let mut kept = None;
+    if let Ok(read) = even_odd(cx, re, &mut alt) {
+        if cx.added.is_empty() {
+            copy_into(out, &alt);
+            cx.repairs.clear();
+            cx.repair(RepairKind::ReadEvenOdd, 0, 0);
+            // (measured against the input's area as the containment reading has it)
+            let deviation = deviation(area, vertices, out);
+            kept = Some(Outcome { deviation, ..read });
+        }
+    }
+    re.alt_out = alt;
+    kept.unwrap_or_else(|| {
+        cx.added.clear();
+        copy_into(&mut cx.dropped, &re.best_dropped);
+        copy_into(&mut cx.repairs, &re.best_repairs);
+        made
     })
 }
 

@@ -72,7 +72,37 @@ impl Worker {
                 options,
                 out,
             ),
-            None => lenient::triangulate(cx, stages, reruns, vertices, ring_starts, options, out),
+            None => {
+                let made =
+                    lenient::triangulate(cx, stages, reruns, vertices, ring_starts, options, out)?;
+                if !options.lenient || options.nesting != crate::Nesting::Auto || stages.small.took
+                {
+                    return Ok(made);
+                }
+                let fill = &mut self.fill;
+                let even_odd = options.with_fill_rule(crate::FillRule::EvenOdd);
+                Ok(lenient::read_even_odd_where_rings_overlap(
+                    cx,
+                    reruns,
+                    vertices,
+                    made,
+                    out,
+                    |cx, reruns, alt| {
+                        let rule = crate::FillRule::EvenOdd;
+                        fill::triangulate(
+                            cx,
+                            stages,
+                            reruns,
+                            fill,
+                            vertices,
+                            ring_starts,
+                            rule,
+                            &even_odd,
+                            alt,
+                        )
+                    },
+                ))
+            }
         }
     }
 }

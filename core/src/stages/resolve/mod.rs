@@ -108,7 +108,7 @@ pub(crate) struct Scratch {
     /// Twice the edges' mean extent (the longer side of an edge's box): the widest cell
     /// of the grids.
     typical: f64,
-    /// The fragments being split at vertices (then the buffer of the ones before).
+    /// The fragments split at vertices, before they are copied back.
     split: Vec<Edge>,
     /// Every hot point by position, where snap rounding runs again.
     table: Vec<u32>,
@@ -557,7 +557,9 @@ fn snap_again(
     inputs: usize,
     added: &mut Vec<Added>,
 ) -> Result<(), Error> {
-    core::mem::swap(&mut s.edges, &mut s.fragments);
+    // (copied, not swapped: each buffer keeps its own size from call to call)
+    s.edges.clear();
+    s.edges.extend_from_slice(&s.fragments);
     s.typical = typical_extent(&s.edges, &s.hot);
     find_crossings(s, lo, hi, grid, reach, None, [usize::MAX; 3]);
     if s.crossings.is_empty() || s.snaps >= SNAPS {
@@ -638,7 +640,11 @@ fn split_at_vertices(s: &mut Scratch, lo: [f64; 2], hi: [f64; 2], reach: f64) {
         });
         push_path(&mut out, &mut s.on_edge, &s.hot, f);
     }
-    s.split = core::mem::replace(&mut s.fragments, out);
+    // (copied back, not swapped: each buffer keeps its own size from call to call, so
+    // that a warm call allocates nothing)
+    s.fragments.clear();
+    s.fragments.extend_from_slice(&out);
+    s.split = out;
 }
 
 /// Sorts the items `0..` by their `keys` (each below `n`) into compressed rows: row `k`

@@ -13,19 +13,22 @@ use crate::Nesting;
 /// Step 5: decides the rings' roles by containment — exactly one ring contains every
 /// other, and no other contains another — and turns the holes clockwise. `false`
 /// otherwise, or when `FirstIsOuter` names another ring the boundary (the pipeline then
-/// reports or repairs it). A ring with a vertex no other ring touches is tested against
-/// the others by crossing parity there; one whose every vertex another ring touches, by
-/// [`contains`].
+/// reports or repairs it). A ring touching no other is tested against the others by
+/// crossing parity at one of its vertices; one touching another, against that one by
+/// [`contains`], which asks every vertex where they touch: one vertex off the other ring
+/// does not decide for a ring partly inside it, which the pipeline decides at its
+/// rightmost vertex and refuses, the check of shared positions or not.
 pub(super) fn nest<const N: usize, M: Mask>(s: &mut Scratch<N, M>, nesting: Nesting) -> bool {
     let mut outer = None;
     for b in 0..s.rings {
         // (a vertex no other ring touches lies on no other ring: parity there decides)
         let untouched = s.ring(b).find(|&v| s.touched & bit(v) == M::NONE);
+        let touches = untouched.is_none() || s.ring(b).any(|v| s.touched & bit(v) != M::NONE);
         let mut depth = 0;
         for r in (0..s.rings).filter(|&r| r != b) {
             let within = match untouched {
-                Some(v) => Some(inside(s, r, s.p[v])),
-                None => contains(s, r, b),
+                Some(v) if !touches => Some(inside(s, r, s.p[v])),
+                _ => contains(s, r, b),
             };
             match within {
                 Some(within) => depth += usize::from(within),

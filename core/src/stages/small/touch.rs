@@ -245,37 +245,67 @@ pub(super) fn split<const N: usize, M: Mask>(s: &mut Scratch<N, M>) -> bool {
 /// Strict mode, after the holes were turned: whether the rings meet without crossing at
 /// every shared position — round it, the winding number of the sectors between the edges
 /// there takes two consecutive values (`nest`'s `check_shared_positions`).
+///
+/// False too where one ring's own visits there do so by themselves take more (a figure
+/// eight whose lobes turn opposite ways crosses itself at its waist; a lobe inside its
+/// ring turning the same way winds twice): another ring may cancel the difference, so
+/// that the sum passes, but the pipeline reads such a ring by rules this stage does not
+/// repeat (it refuses a ring crossing itself whatever cancels it), so it hands it back.
 pub(super) fn proper<const N: usize, M: Mask>(s: &Scratch<N, M>) -> bool {
+    let masks: [M; RINGS] = core::array::from_fn(|r| {
+        if r < s.rings {
+            ring_mask(s, r)
+        } else {
+            M::NONE
+        }
+    });
     let mut i = 0;
     while i < s.shared_len {
         let j = group_end(s, i);
         let o = s.p[usize::from(s.shared[i])];
-        let mut rays = [(o, 0i32); 2 * FEW_AT_ONE_POSITION];
-        if 2 * (j - i) > rays.len() {
+        let group = &s.shared[i..j];
+        if group.len() > FEW_AT_ONE_POSITION || sectors(s, o, group, M::NONE) > 1 {
             return false;
         }
-        for (k, &v) in s.shared[i..j].iter().enumerate() {
-            let v = usize::from(v);
-            rays[2 * k] = (s.p[s.next(v)], 1);
-            rays[2 * k + 1] = (s.p[s.prev(v)], -1);
-        }
-        let rays = &mut rays[..2 * (j - i)];
-        rays.sort_unstable_by(|u, w| cmp_around(o, u.0, w.0));
-        // rays along one direction bound no sector between them
-        let (mut w, mut lo, mut hi) = (0, 0, 0);
-        for (k, &(d, step)) in rays.iter().enumerate() {
-            w += step;
-            let ends = !matches!(rays.get(k + 1), Some(&(e, _)) if cmp_around(o, d, e).is_eq());
-            if ends {
-                (lo, hi) = (lo.min(w), hi.max(w));
+        for &mask in &masks[..s.rings] {
+            let visits = group
+                .iter()
+                .filter(|&&v| mask & bit::<M>(v.into()) != M::NONE);
+            if visits.count() > 1 && sectors(s, o, group, mask) > 1 {
+                return false;
             }
-        }
-        if hi - lo > 1 {
-            return false;
         }
         i = j;
     }
     true
+}
+
+/// How many values the winding number takes in the sectors round `o` between the edges
+/// of the nodes of `group` (at most [`FEW_AT_ONE_POSITION`], all at `o`), less one: of
+/// those in `only` unless it is empty. Rays along one direction bound no sector between
+/// them.
+fn sectors<const N: usize, M: Mask>(s: &Scratch<N, M>, o: Point, group: &[u8], only: M) -> i32 {
+    let mut rays = [(o, 0i32); 2 * FEW_AT_ONE_POSITION];
+    let mut len = 0;
+    for &v in group {
+        let v = usize::from(v);
+        if only == M::NONE || only & bit::<M>(v) != M::NONE {
+            rays[len] = (s.p[s.next(v)], 1);
+            rays[len + 1] = (s.p[s.prev(v)], -1);
+            len += 2;
+        }
+    }
+    let rays = &mut rays[..len];
+    rays.sort_unstable_by(|u, w| cmp_around(o, u.0, w.0));
+    let (mut w, mut lo, mut hi) = (0, 0, 0);
+    for (k, &(d, step)) in rays.iter().enumerate() {
+        w += step;
+        let ends = !matches!(rays.get(k + 1), Some(&(e, _)) if cmp_around(o, d, e).is_eq());
+        if ends {
+            (lo, hi) = (lo.min(w), hi.max(w));
+        }
+    }
+    hi - lo
 }
 
 /// Step 6a: re-links every touch by the face-walk rule and traces the rings again

@@ -54,9 +54,10 @@ pub enum RepairKind {
     DegeneratePiece,
     /// With `Nesting::Auto`, rings lie on each other without crossing (a ring given twice,
     /// a ring along another's edges inside it: strict mode refuses them as
-    /// `Error::RingsOverlap`), so that containment cannot order them: they were read by
-    /// the even–odd rule, as [`FillRule::EvenOdd`](crate::FillRule::EvenOdd) reads them,
-    /// which adds no vertex where no edges cross. `ring` and `vertex` are 0.
+    /// `Error::RingsOverlap`) or cross each other at a vertex they share
+    /// (`Error::RingsCrossAtVertex`), so that containment cannot order them: they were
+    /// read by the even–odd rule, as [`FillRule::EvenOdd`](crate::FillRule::EvenOdd)
+    /// reads them, which adds no vertex where no edges cross. `ring` and `vertex` are 0.
     ReadEvenOdd,
 }
 

@@ -106,8 +106,9 @@ pub(crate) struct Context {
     pub rings_doubled: bool,
     /// Lenient mode: a ring lies on another's boundary, inside it, where strict mode
     /// refuses it as `Error::RingsOverlap`: two rings each inside the other (which
-    /// lenient mode makes cancel), or depths that do not make one the other's hole (set
-    /// by `nest`).
+    /// lenient mode makes cancel), or depths that do not make one the other's hole; or
+    /// (`Nesting::Auto`, no edges crossing) rings cross at a vertex they share, where
+    /// strict mode refuses them as `Error::RingsCrossAtVertex` (set by `nest`).
     pub rings_overlap: bool,
     /// The input rings `lobes` split (their lobes are the rings after `as_loaded`'s).
     pub lobe_rings: Vec<u32>,

@@ -131,14 +131,21 @@ pub(crate) fn nest(cx: &mut Context, s: &mut Scratch, nesting: Nesting) -> Resul
             }
         });
     }
-    if cx.lenient {
-        Ok(())
-    } else {
+    if !cx.lenient {
         check_shared_positions(cx, s)
+    } else {
+        // Lenient mode: rings crossing at a shared vertex overlap there as rings lying on
+        // each other do (containment cannot order them), and the triangulator reads them
+        // by even–odd too (where no edges cross, so that it adds no vertex)
+        let read_by_containment = nesting == Nesting::Auto && cx.crossings.is_empty();
+        if read_by_containment && !cx.rings_overlap && check_shared_positions(cx, s).is_err() {
+            cx.rings_overlap = true;
+        }
+        Ok(())
     }
 }
 
-/// Strict mode: around every position several nodes share, the polygon's winding number
+/// Around every position several nodes share, the polygon's winding number
 /// (outer rings counter-clockwise, holes clockwise by now) may take only two consecutive
 /// values in the sectors between the edges there. Rings that cross each other at a shared
 /// vertex (an X of two rings, or of one ring's two visits) give three; the sweep sees no

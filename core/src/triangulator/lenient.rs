@@ -204,12 +204,16 @@ pub(crate) fn triangulate<T: Coord>(
 
 /// Lenient mode, rings read by containment (`Nesting::Auto`) whose edges cross nowhere but
 /// which lie on each other (a ring given twice, a ring along another's edges inside it:
-/// strict mode refuses them as `Error::RingsOverlap`): containment cannot order them, and
-/// the triangles of [`triangulate`] (`made`, in `out`) may cover a region twice. The
-/// even–odd rule reads such rings exactly, as the oracle reads rings by containment, and
-/// adds no vertex where no edges cross: `even_odd` runs it (into its buffer), and its
-/// triangles replace `made`'s when it added no vertex, with a [`RepairKind::ReadEvenOdd`]
-/// repair. Otherwise `made` stands, its report restored.
+/// strict mode refuses them as `Error::RingsOverlap`) or cross each other at a vertex
+/// they share (`Error::RingsCrossAtVertex`): containment cannot order them, and the
+/// triangles of [`triangulate`] (`made`, in `out`) may cover a region twice. The even–odd
+/// rule reads such rings exactly where some choice of outer rings and holes makes every
+/// winding number 0 or 1 (as the oracle reads rings by containment: the winding number
+/// and the count of rings round a point then have the same parity), covers nothing twice
+/// where none does (two rings crossing as an X), and adds no vertex where no edges cross:
+/// `even_odd` runs it (into its buffer), and its triangles replace `made`'s when it added
+/// no vertex, with a [`RepairKind::ReadEvenOdd`] repair. Otherwise `made` stands, its
+/// report restored.
 pub(crate) fn read_even_odd_where_rings_overlap<T: Coord>(
     cx: &mut Context,
     re: &mut Reruns,

@@ -13,22 +13,19 @@ use crate::Nesting;
 /// Step 5: decides the rings' roles by containment — exactly one ring contains every
 /// other, and no other contains another — and turns the holes clockwise. `false`
 /// otherwise, or when `FirstIsOuter` names another ring the boundary (the pipeline then
-/// reports or repairs it). A ring touching no other is tested against the others by
-/// crossing parity at one of its vertices; one touching another, against that one by
-/// [`contains`], which asks every vertex where they touch: one vertex off the other ring
-/// does not decide for a ring partly inside it, which the pipeline decides at its
-/// rightmost vertex and refuses, the check of shared positions or not.
+/// reports or repairs it). A ring with vertices no other ring touches is tested against
+/// the others by crossing parity at them ([`off_side`]); one whose every vertex another
+/// ring touches, by [`contains`].
 pub(super) fn nest<const N: usize, M: Mask>(s: &mut Scratch<N, M>, nesting: Nesting) -> bool {
     let mut outer = None;
     for b in 0..s.rings {
         // (a vertex no other ring touches lies on no other ring: parity there decides)
         let untouched = s.ring(b).find(|&v| s.touched & bit(v) == M::NONE);
-        let touches = untouched.is_none() || s.ring(b).any(|v| s.touched & bit(v) != M::NONE);
         let mut depth = 0;
         for r in (0..s.rings).filter(|&r| r != b) {
             let within = match untouched {
-                Some(v) if !touches => Some(inside(s, r, s.p[v])),
-                _ => contains(s, r, b),
+                Some(v) => off_side(s, r, b, v),
+                None => contains(s, r, b),
             };
             match within {
                 Some(within) => depth += usize::from(within),
@@ -55,6 +52,30 @@ pub(super) fn nest<const N: usize, M: Mask>(s: &mut Scratch<N, M>, nesting: Nest
         s.hole_rings |= 1 << r;
     }
     true
+}
+
+/// Whether ring `r` contains ring `b`, which has vertices no ring touches (`v` the first):
+/// by crossing parity at one of them where b touches nothing, else at the first of each
+/// stretch of them between touched vertices, which must agree (`None` otherwise). A
+/// stretch touches no ring, so it lies on one side of r; but b's stretches may lie on
+/// both sides where b crosses r at vertices they share, which the pipeline decides at
+/// b's rightmost vertex and refuses (by the check of shared positions, or as a lobe
+/// winding the other way), while one vertex's answer may make that pass here.
+fn off_side<const N: usize, M: Mask>(
+    s: &Scratch<N, M>,
+    r: usize,
+    b: usize,
+    v: usize,
+) -> Option<bool> {
+    let touched = |v: usize| s.touched & bit::<M>(v) != M::NONE;
+    let within = inside(s, r, s.p[v]);
+    let stretches = s.ring(b).filter(|&w| !touched(w) && touched(s.prev(w)));
+    for w in stretches {
+        if w != v && inside(s, r, s.p[w]) != within {
+            return None;
+        }
+    }
+    Some(within)
 }
 
 /// Whether ring `r` contains ring `b`, as `nest` decides it; `None` where the stage does

@@ -252,8 +252,12 @@ pub(super) fn split<const N: usize, M: Mask>(s: &mut Scratch<N, M>) -> bool {
 /// that the sum passes, but the pipeline reads such a ring by rules this stage does not
 /// repeat (it refuses a ring crossing itself whatever cancels it), so it hands it back.
 pub(super) fn proper<const N: usize, M: Mask>(s: &Scratch<N, M>) -> bool {
+    if s.shared_len == 0 {
+        return true;
+    }
+    // (with one ring at a position, its own sectors are all the sectors there)
     let masks: [M; RINGS] = core::array::from_fn(|r| {
-        if r < s.rings {
+        if r < s.rings && s.rings > 1 {
             ring_mask(s, r)
         } else {
             M::NONE
@@ -267,23 +271,35 @@ pub(super) fn proper<const N: usize, M: Mask>(s: &Scratch<N, M>) -> bool {
         if group.len() > FEW_AT_ONE_POSITION || sectors(s, o, group, M::NONE) > 1 {
             return false;
         }
-        for &mask in &masks[..s.rings] {
-            let visits = group
-                .iter()
-                .filter(|&&v| mask & bit::<M>(v.into()) != M::NONE);
-            if visits.count() > 1 && sectors(s, o, group, mask) > 1 {
-                return false;
-            }
+        if s.rings > 1 && !apart_at(s, o, group, &masks[..s.rings]) {
+            return false;
         }
         i = j;
     }
     true
 }
 
+/// [`proper`] at one position `o` where several rings meet (`masks` their nodes): whether
+/// no ring that passes it twice crosses itself there (its own sectors take two values).
+#[inline(never)]
+fn apart_at<const N: usize, M: Mask>(
+    s: &Scratch<N, M>,
+    o: Point,
+    group: &[u8],
+    masks: &[M],
+) -> bool {
+    let here = (group.iter()).fold(M::NONE, |m, &v| m | bit::<M>(v.into()));
+    if masks.iter().filter(|&&m| m & here != M::NONE).count() < 2 {
+        return true;
+    }
+    (masks.iter()).all(|&mask| (mask & here).count() < 2 || sectors(s, o, group, mask) <= 1)
+}
+
 /// How many values the winding number takes in the sectors round `o` between the edges
 /// of the nodes of `group` (at most [`FEW_AT_ONE_POSITION`], all at `o`), less one: of
 /// those in `only` unless it is empty. Rays along one direction bound no sector between
 /// them.
+#[inline(always)]
 fn sectors<const N: usize, M: Mask>(s: &Scratch<N, M>, o: Point, group: &[u8], only: M) -> i32 {
     let mut rays = [(o, 0i32); 2 * FEW_AT_ONE_POSITION];
     let mut len = 0;

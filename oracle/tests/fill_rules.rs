@@ -196,3 +196,55 @@ fn a_spike_through_another_ring_encloses_nothing() {
     let (_, added) = run(&vertices, &[0, 200], &options).expect("even-odd");
     assert!(added.is_empty(), "{added:?}");
 }
+
+/// A ring passing (0, 0) many times, along the axes, whose edges cross at points that
+/// round to (0, 0) from below: rounded in floating point they came out as (−0.0, −0.0),
+/// which `==` calls equal to the vertex at (0, 0) but the sort of points by `total_cmp`
+/// took for another point, so that the ways round the vertex included one of no
+/// length and the sort of them by angle panicked (not a total order). `small_vs_pipeline`
+/// found it, through lenient mode reading rings by even–odd. Every rule, strategy and
+/// precision gives the oracle's region.
+#[test]
+fn crossings_rounded_to_minus_zero_are_the_vertex_at_zero() {
+    let ring = [
+        [2.0, 0.0],
+        [0.0, 0.0],
+        [0.0, 0.0],
+        [0.0, -1.0],
+        [0.0, 14.0],
+        [-6.0, -6.0],
+        [-6.0, -6.0],
+        [0.0, 8.0],
+        [0.0, 10.0],
+        [11.0, 10.0],
+        [11.0, 11.0],
+        [10.0, 10.0],
+        [0.0, 0.0],
+        [0.0, 0.0],
+        [0.0, 0.0],
+        [0.0, 0.0],
+        [0.0, -6.0],
+        [0.0, 3.0],
+        [10.0, 0.0],
+        [-1.0, 0.0],
+        [0.0, 0.0],
+        [0.0, 1.0],
+        [0.0, -14.0],
+        [14.0, 0.0],
+        [0.0, 0.0],
+        [0.0, 0.0],
+        [0.0, 0.0],
+        [0.0, 1.0],
+        [-1.0, 0.0],
+        [14.0, 0.0],
+        [-11.0, 0.0],
+    ];
+    for rule in FillRule::ALL {
+        for strategy in [Strategy::Fast, Strategy::Quality, Strategy::Seidel] {
+            for f32 in [false, true] {
+                let failure = judge(&ring, &[0], rule, strategy, f32);
+                assert_eq!(failure, None, "{rule:?} {strategy:?} f32 {f32}");
+            }
+        }
+    }
+}

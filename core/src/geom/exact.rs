@@ -225,12 +225,15 @@ impl SnapGrid {
     }
 
     /// The grid point nearest to where segments a–b and c–d cross (they must cross at a
-    /// point interior to both, not collinear), exactly rounded.
+    /// point interior to both, not collinear), exactly rounded; a zero coordinate is +0.0,
+    /// as loading reads the input's, so that a crossing rounded onto a vertex is at its
+    /// position bit for bit.
     pub fn crossing(self, a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> [f64; 2] {
-        if let Some(p) = self.crossing_quickly(a, b, c, d) {
-            return p;
-        }
-        self.crossing_exactly(a, b, c, d)
+        let p = match self.crossing_quickly(a, b, c, d) {
+            Some(p) => p,
+            None => self.crossing_exactly(a, b, c, d),
+        };
+        [p[0] + 0.0, p[1] + 0.0]
     }
 
     /// [`SnapGrid::crossing`] in floating point, where that decides: the crossing

@@ -167,8 +167,13 @@ pub(crate) fn greatest(a: f64, b: f64) -> f64 {
 }
 
 /// Compares the directions `o → p` and `o → q` by angle, counter-clockwise from the
-/// positive x axis (`p`, `q` ≠ `o`). `Equal` means the same direction. Exact.
+/// positive x axis (`p`, `q` ≠ `o`). `Equal` means the same direction. Exact. (A point at
+/// `o`, which has no direction, comes before every other, so that sorting by this order
+/// never meets an inconsistent comparison, whatever a caller's bug hands it.)
 pub(crate) fn cmp_around(o: Point, p: Point, q: Point) -> core::cmp::Ordering {
+    if p == o || q == o {
+        return (q == o).cmp(&(p == o));
+    }
     // the half-plane [0, π) before [π, 2π), then the turn between them
     let lower = |d: Point| d.y < o.y || (d.y == o.y && d.x < o.x);
     match (lower(p), lower(q)) {
@@ -228,6 +233,43 @@ pub(crate) fn approx_cross(a: Point, b: Point) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Directions round a point, with the point itself among them (no direction): every
+    /// pair compares consistently, so a sort by this order cannot panic, and the point
+    /// comes first.
+    #[test]
+    fn directions_round_a_point_are_totally_ordered_even_with_the_point_among_them() {
+        let o = Point::new(0.0, 0.0);
+        let mut points = vec![
+            Point::new(1.0, 0.0),
+            Point::new(-0.0, -0.0),
+            Point::new(0.0, 1.0),
+            Point::new(-1.0, 0.0),
+            Point::new(0.0, 0.0),
+            Point::new(0.0, -1.0),
+            Point::new(2.0, 0.0),
+            Point::new(1.0, -1.0),
+        ];
+        for &a in &points {
+            for &b in &points {
+                assert_eq!(
+                    cmp_around(o, a, b),
+                    cmp_around(o, b, a).reverse(),
+                    "{a:?} {b:?}"
+                );
+                for &c in &points {
+                    let (ab, bc) = (cmp_around(o, a, b), cmp_around(o, b, c));
+                    if ab != core::cmp::Ordering::Greater && bc != core::cmp::Ordering::Greater {
+                        assert_ne!(cmp_around(o, a, c), core::cmp::Ordering::Greater);
+                    }
+                }
+            }
+        }
+        points.sort_by(|&a, &b| cmp_around(o, a, b));
+        assert!(points[..2].iter().all(|&p| p == o));
+        assert_eq!(points[2..4], [Point::new(1.0, 0.0), Point::new(2.0, 0.0)]);
+        assert_eq!(points[7], Point::new(1.0, -1.0));
+    }
 
     #[test]
     fn the_exact_range_of_orient2d_is_powers_of_two() {

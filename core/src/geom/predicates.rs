@@ -171,9 +171,6 @@ pub(crate) fn greatest(a: f64, b: f64) -> f64 {
 /// `o`, which has no direction, comes before every other, so that sorting by this order
 /// never meets an inconsistent comparison, whatever a caller's bug hands it.)
 pub(crate) fn cmp_around(o: Point, p: Point, q: Point) -> core::cmp::Ordering {
-    if p == o || q == o {
-        return (q == o).cmp(&(p == o));
-    }
     // the half-plane [0, π) before [π, 2π), then the turn between them
     let lower = |d: Point| d.y < o.y || (d.y == o.y && d.x < o.x);
     match (lower(p), lower(q)) {
@@ -182,7 +179,8 @@ pub(crate) fn cmp_around(o: Point, p: Point, q: Point) -> core::cmp::Ordering {
         _ => match orient2d(o, p, q) {
             Orientation::CounterClockwise => core::cmp::Ordering::Less,
             Orientation::Clockwise => core::cmp::Ordering::Greater,
-            Orientation::Collinear => core::cmp::Ordering::Equal,
+            // one direction, or a point at o (in the upper half-plane by `lower`)
+            Orientation::Collinear => (q == o).cmp(&(p == o)),
         },
     }
 }

@@ -21,9 +21,12 @@ pub(super) fn nest<const N: usize, M: Mask>(s: &mut Scratch<N, M>, nesting: Nest
     for b in 0..s.rings {
         // (a vertex no other ring touches lies on no other ring: parity there decides)
         let untouched = s.ring(b).find(|&v| s.touched & bit(v) == M::NONE);
+        // (most rings touch nothing: one vertex decides)
+        let touches = s.touched != M::NONE && s.touched & ring_mask(s, b) != M::NONE;
         let mut depth = 0;
         for r in (0..s.rings).filter(|&r| r != b) {
             let within = match untouched {
+                Some(v) if !touches => Some(inside(s, r, s.p[v])),
                 Some(v) => off_side(s, r, b, v),
                 None => contains(s, r, b),
             };
@@ -54,9 +57,9 @@ pub(super) fn nest<const N: usize, M: Mask>(s: &mut Scratch<N, M>, nesting: Nest
     true
 }
 
-/// Whether ring `r` contains ring `b`, which has vertices no ring touches (`v` the first):
-/// by crossing parity at one of them where b touches nothing, else at the first of each
-/// stretch of them between touched vertices, which must agree (`None` otherwise). A
+/// Whether ring `r` contains ring `b`, which has vertices no ring touches (`v` the first)
+/// and some that one does: by crossing parity at the first vertex of each stretch of
+/// untouched ones, which must agree (`None` otherwise). A
 /// stretch touches no ring, so it lies on one side of r; but b's stretches may lie on
 /// both sides where b crosses r at vertices they share, which the pipeline decides at
 /// b's rightmost vertex and refuses (by the check of shared positions, or as a lobe

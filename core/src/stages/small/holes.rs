@@ -58,23 +58,50 @@ pub(super) fn nest<const N: usize, M: Mask>(s: &mut Scratch<N, M>, nesting: Nest
 }
 
 /// Whether ring `r` contains ring `b`, which has vertices no ring touches (`v` the first)
-/// and some that one does: by crossing parity at the first vertex of each stretch of
-/// untouched ones, which must agree (`None` otherwise). A
-/// stretch touches no ring, so it lies on one side of r; but b's stretches may lie on
-/// both sides where b crosses r at vertices they share, which the pipeline decides at
-/// b's rightmost vertex and refuses (by the check of shared positions, or as a lobe
-/// winding the other way), while one vertex's answer may make that pass here.
+/// and some that one does; `None` where b's parts do not agree. b's boundary off r lies on
+/// one side of r piece by piece (the rings do not cross, and a vertex inside an edge was
+/// split there), so each piece is read once: a stretch of untouched vertices, or a vertex
+/// touched but off r, by crossing parity at its first vertex; an edge between two
+/// vertices on r but not along r (a chord), by b's corner at its start
+/// ([`locally_inside`]). One vertex's answer would do for valid rings; but b may lie
+/// partly inside r where r cancels lobes of b, or b crosses r at vertices they share,
+/// which the pipeline decides at b's rightmost vertex and refuses, while one vertex's
+/// answer may make that pass here.
 fn off_side<const N: usize, M: Mask>(
     s: &Scratch<N, M>,
     r: usize,
     b: usize,
     v: usize,
 ) -> Option<bool> {
-    let touched = |v: usize| s.touched & bit::<M>(v) != M::NONE;
+    let touched = |u: usize| s.touched & bit::<M>(u) != M::NONE;
+    let on_r = |u: usize| touched(u) && s.ring(r).any(|w| s.p[w] == s.p[u]);
     let within = inside(s, r, s.p[v]);
-    let stretches = s.ring(b).filter(|&w| !touched(w) && touched(s.prev(w)));
-    for w in stretches {
-        if w != v && inside(s, r, s.p[w]) != within {
+    for u in s.ring(b).filter(|&u| u != v) {
+        let side = if !touched(u) {
+            if !touched(s.prev(u)) {
+                continue;
+            }
+            inside(s, r, s.p[u])
+        } else if !on_r(u) {
+            inside(s, r, s.p[u])
+        } else if on_r(s.next(u)) {
+            // (along an edge of r it says nothing)
+            let (a, c) = (s.p[u], s.p[s.next(u)]);
+            let along = |w: usize| {
+                let (d, e) = (s.p[w], s.p[s.next(w)]);
+                (d == a && e == c) || (d == c && e == a)
+            };
+            if s.ring(r).any(along) {
+                continue;
+            }
+            match locally_inside(s, r, u)[0] {
+                Some(side) => side,
+                None => continue,
+            }
+        } else {
+            continue;
+        };
+        if side != within {
             return None;
         }
     }

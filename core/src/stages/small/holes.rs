@@ -6,6 +6,7 @@
 
 use core::cmp::Ordering;
 
+use super::touch::group_end;
 use super::{bit, members, reverse, ring_mask, winding, Mask, Scratch, RINGS};
 use crate::geom::{cmp_around, compare_hits, corner_contains, left_of, on_ray, LeastAngle, Point};
 use crate::Nesting;
@@ -17,18 +18,22 @@ use crate::Nesting;
 /// the others by crossing parity at them ([`off_side`]); one whose every vertex another
 /// ring touches, by [`contains`].
 pub(super) fn nest<const N: usize, M: Mask>(s: &mut Scratch<N, M>, nesting: Nesting) -> bool {
+    let meets = Meets::of(s);
     let mut outer = None;
     for b in 0..s.rings {
         // (a vertex no other ring touches lies on no other ring: parity there decides)
         let untouched = s.ring(b).find(|&v| s.touched & bit(v) == M::NONE);
-        // (most rings touch nothing: one vertex decides)
-        let touches = s.touched != M::NONE && s.touched & ring_mask(s, b) != M::NONE;
+        // the rings b meets at shared positions (itself among them, if it does)
+        let met = match meets {
+            Some(ref meets) => s.ring(b).fold(0, |m, v| m | meets.rings[v]),
+            None => 0,
+        };
         let mut depth = 0;
         for r in (0..s.rings).filter(|&r| r != b) {
-            let within = match untouched {
-                Some(v) if !touches => Some(inside(s, r, s.p[v])),
-                Some(v) => off_side(s, r, b, v),
-                None => contains(s, r, b),
+            let within = match (untouched, &meets) {
+                (Some(v), Some(meets)) if met & 1 << r != 0 => off_side(s, meets, r, b, v),
+                (Some(v), _) => Some(inside(s, r, s.p[v])),
+                (None, _) => contains(s, r, b),
             };
             match within {
                 Some(within) => depth += usize::from(within),
@@ -57,41 +62,88 @@ pub(super) fn nest<const N: usize, M: Mask>(s: &mut Scratch<N, M>, nesting: Nest
     true
 }
 
+/// Where rings meet, for [`off_side`]: per node at a shared position, the rings with a
+/// node there (one bit each), its own ring and where its position's nodes start in
+/// `s.shared`.
+struct Meets<const N: usize> {
+    rings: [u8; N],
+    ring: [u8; N],
+    group: [u8; N],
+}
+
+impl<const N: usize> Meets<N> {
+    /// `None` where no rings meet.
+    fn of<M: Mask>(s: &Scratch<N, M>) -> Option<Self> {
+        if s.shared_len == 0 {
+            return None;
+        }
+        let masks: [M; RINGS] = core::array::from_fn(|r| {
+            if r < s.rings {
+                ring_mask(s, r)
+            } else {
+                M::NONE
+            }
+        });
+        let mut meets = Meets {
+            rings: [0; N],
+            ring: [0; N],
+            group: [0; N],
+        };
+        let mut i = 0;
+        while i < s.shared_len {
+            let j = group_end(s, i);
+            let group = &s.shared[i..j];
+            let here = (group.iter()).fold(M::NONE, |m, &v| m | bit::<M>(v.into()));
+            let rings = (0..s.rings)
+                .filter(|&r| masks[r] & here != M::NONE)
+                .fold(0u8, |m, r| m | 1 << r);
+            for &v in group {
+                let v = usize::from(v);
+                let ring = (0..s.rings).find(|&r| masks[r] & bit::<M>(v) != M::NONE);
+                meets.rings[v] = rings;
+                meets.ring[v] = ring.unwrap_or(0) as u8;
+                meets.group[v] = i as u8;
+            }
+            i = j;
+        }
+        Some(meets)
+    }
+}
+
 /// Whether ring `r` contains ring `b`, which has vertices no ring touches (`v` the first)
-/// and some that one does; `None` where b's parts do not agree. b's boundary off r lies on
-/// one side of r piece by piece (the rings do not cross, and a vertex inside an edge was
-/// split there), so each piece is read once: a stretch of untouched vertices, or a vertex
-/// touched but off r, by crossing parity at its first vertex; an edge between two
-/// vertices on r but not along r (a chord), by b's corner at its start
-/// ([`locally_inside`]). One vertex's answer would do for valid rings; but b may lie
+/// and meets r; `None` where b's parts do not agree. b's boundary off r lies on one side
+/// of r piece by piece (the rings do not cross, and a vertex inside an edge was split
+/// there), so each piece is read once: a stretch of vertices off r by crossing parity at
+/// its first vertex, an edge between two vertices on r but not along r (a chord) by b's
+/// corner at its start ([`locally_inside`]). One vertex's answer would do for valid rings; but b may lie
 /// partly inside r where r cancels lobes of b, or b crosses r at vertices they share,
 /// which the pipeline decides at b's rightmost vertex and refuses, while one vertex's
 /// answer may make that pass here.
 fn off_side<const N: usize, M: Mask>(
     s: &Scratch<N, M>,
+    meets: &Meets<N>,
     r: usize,
     b: usize,
     v: usize,
 ) -> Option<bool> {
-    let touched = |u: usize| s.touched & bit::<M>(u) != M::NONE;
-    let on_r = |u: usize| touched(u) && s.ring(r).any(|w| s.p[w] == s.p[u]);
+    let on_r = |u: usize| s.touched & bit::<M>(u) != M::NONE && meets.rings[u] & 1 << r != 0;
     let within = inside(s, r, s.p[v]);
     for u in s.ring(b).filter(|&u| u != v) {
-        let side = if !touched(u) {
-            if !touched(s.prev(u)) {
+        let side = if !on_r(u) {
+            // (the first vertex of a stretch off r)
+            if !on_r(s.prev(u)) {
                 continue;
             }
             inside(s, r, s.p[u])
-        } else if !on_r(u) {
-            inside(s, r, s.p[u])
         } else if on_r(s.next(u)) {
-            // (along an edge of r it says nothing)
-            let (a, c) = (s.p[u], s.p[s.next(u)]);
-            let along = |w: usize| {
-                let (d, e) = (s.p[w], s.p[s.next(w)]);
-                (d == a && e == c) || (d == c && e == a)
-            };
-            if s.ring(r).any(along) {
+            // (along an edge of r it says nothing: r has a node at u's position whose
+            // edge in or out ends where b's edge out of u does)
+            let ahead = s.p[s.next(u)];
+            let group = &s.shared[usize::from(meets.group[u])..s.shared_len];
+            let here = group.iter().map(|&w| usize::from(w));
+            let mut at_u = here.take_while(|&w| s.p[w] == s.p[u]);
+            let along = |w: usize| s.p[s.next(w)] == ahead || s.p[s.prev(w)] == ahead;
+            if at_u.any(|w| usize::from(meets.ring[w]) == r && along(w)) {
                 continue;
             }
             match locally_inside(s, r, u)[0] {

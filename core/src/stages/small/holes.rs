@@ -6,8 +6,8 @@
 
 use core::cmp::Ordering;
 
-use super::touch::group_end;
-use super::{bit, members, reverse, ring_mask, winding, Mask, Scratch, RINGS};
+use super::touch::{group_end, ring_of};
+use super::{bit, members, reverse, ring_mask, ring_masks, winding, Mask, Scratch, RINGS};
 use crate::geom::{cmp_around, compare_hits, corner_contains, left_of, on_ray, LeastAngle, Point};
 use crate::Nesting;
 
@@ -77,13 +77,7 @@ impl<const N: usize> Meets<N> {
         if s.shared_len == 0 {
             return None;
         }
-        let masks: [M; RINGS] = core::array::from_fn(|r| {
-            if r < s.rings {
-                ring_mask(s, r)
-            } else {
-                M::NONE
-            }
-        });
+        let masks = ring_masks(s);
         let mut meets = Meets {
             rings: [0; N],
             ring: [0; N],
@@ -99,9 +93,8 @@ impl<const N: usize> Meets<N> {
                 .fold(0u8, |m, r| m | 1 << r);
             for &v in group {
                 let v = usize::from(v);
-                let ring = (0..s.rings).find(|&r| masks[r] & bit::<M>(v) != M::NONE);
                 meets.rings[v] = rings;
-                meets.ring[v] = ring.unwrap_or(0) as u8;
+                meets.ring[v] = ring_of(s, v) as u8;
                 meets.group[v] = i as u8;
             }
             i = j;
@@ -115,8 +108,8 @@ impl<const N: usize> Meets<N> {
 /// of r piece by piece (the rings do not cross, and a vertex inside an edge was split
 /// there), so each piece is read once: a stretch of vertices off r by crossing parity at
 /// its first vertex, an edge between two vertices on r but not along r (a chord) by b's
-/// corner at its start ([`locally_inside`]). One vertex's answer would do for valid rings; but b may lie
-/// partly inside r where r cancels lobes of b, or b crosses r at vertices they share,
+/// corner at its start ([`locally_inside`]). One vertex's answer would do for valid
+/// rings; but b may lie partly inside r where r cancels lobes of b, or b crosses r at vertices they share,
 /// which the pipeline decides at b's rightmost vertex and refuses, while one vertex's
 /// answer may make that pass here.
 fn off_side<const N: usize, M: Mask>(
@@ -126,7 +119,8 @@ fn off_side<const N: usize, M: Mask>(
     b: usize,
     v: usize,
 ) -> Option<bool> {
-    let on_r = |u: usize| s.touched & bit::<M>(u) != M::NONE && meets.rings[u] & 1 << r != 0;
+    // (a node at no shared position meets no ring)
+    let on_r = |u: usize| meets.rings[u] & 1 << r != 0;
     let within = inside(s, r, s.p[v]);
     for u in s.ring(b).filter(|&u| u != v) {
         let side = if !on_r(u) {

@@ -277,6 +277,17 @@ fn ring_mask<const N: usize, M: Mask>(s: &Scratch<N, M>, r: usize) -> M {
     s.ring(r).fold(M::NONE, |mask, v| mask | bit(v))
 }
 
+/// [`ring_mask`] of every ring, by ring (empty past the last).
+fn ring_masks<const N: usize, M: Mask>(s: &Scratch<N, M>) -> [M; RINGS] {
+    core::array::from_fn(|r| {
+        if r < s.rings {
+            ring_mask(s, r)
+        } else {
+            M::NONE
+        }
+    })
+}
+
 /// The winding number of ring `r` round `q`, a point on none of its edges
 /// ([`ray_crossing`], as `nest` counts).
 fn winding<const N: usize, M: Mask>(s: &Scratch<N, M>, r: usize, q: Point) -> i64 {

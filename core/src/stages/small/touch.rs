@@ -25,7 +25,7 @@
 
 use core::cmp::Ordering;
 
-use super::{bit, ring_mask, winding, Mask, Scratch, RINGS, TOUCHES};
+use super::{bit, ring_mask, ring_masks, winding, Mask, Scratch, RINGS, TOUCHES};
 use crate::geom::{
     bundle_end, clockwise_before, cmp_around, cmp_xy, inside_along, orient2d, pair_alternating,
     within_box, Orientation, Point, RightmostVisit,
@@ -255,14 +255,13 @@ pub(super) fn proper<const N: usize, M: Mask>(s: &Scratch<N, M>) -> bool {
     if s.shared_len == 0 {
         return true;
     }
-    // (with one ring at a position, its own sectors are all the sectors there)
-    let masks: [M; RINGS] = core::array::from_fn(|r| {
-        if r < s.rings && s.rings > 1 {
-            ring_mask(s, r)
-        } else {
-            M::NONE
-        }
-    });
+    // (with one ring at a position, its own sectors are all the sectors there: `apart_at`
+    // is asked only where several rings are)
+    let masks = if s.rings > 1 {
+        ring_masks(s)
+    } else {
+        [M::NONE; RINGS]
+    };
     let mut i = 0;
     while i < s.shared_len {
         let j = group_end(s, i);
